@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs the Debian packages softgrain needs, only those missing.
+# Works as root or through sudo. Each package is here for one reason:
+#   cmake, g++          build (C++20, OpenMP comes with g++)
+#   libeigen3-dev       small dense algebra (2x2 tensors, 3x3 MLS moment matrices, eigen solves in tests)
+#   libcgal-dev         constrained Delaunay triangulation + mesher of grain domains (meshfree/)
+#   libtomlplusplus-dev TOML scenario files
+#   libcli11-dev        the command line
+#   libgtest-dev        tests; libbenchmark-dev: bench/
+#   libcairo2-dev       PNG rendering of grains (render/)
+#   python3-matplotlib  plots drawn by /usr/bin/python3 (analysis pictures)
+set -euo pipefail
+packages=(cmake g++ make libeigen3-dev libcgal-dev libtomlplusplus-dev libcli11-dev
+          libgtest-dev libbenchmark-dev libcairo2-dev python3-matplotlib python3-numpy)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+sudo_cmd=()
+[ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+echo "softgrain: installing missing Debian packages: ${missing[*]}"
+"${sudo_cmd[@]}" apt-get update -qq
+DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
