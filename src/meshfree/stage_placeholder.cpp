@@ -1,0 +1,1 @@
+// Placeholder so the stage library has a translation unit until its first source lands.
