@@ -2,6 +2,9 @@
 // 2D vectors and 2x2 tensors: Eigen's fixed-size types, so the algebra is well tested
 // and vectorizes; a few helpers that 2D mechanics needs and Eigen does not name.
 #include <Eigen/Core>
+#include <Eigen/LU>  // determinant() and inverse() of fixed-size matrices
+
+#include <cmath>
 
 namespace sg {
 

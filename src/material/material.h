@@ -1,0 +1,76 @@
+#pragma once
+// Constitutive laws of deformable grains, as values (STYLE.md: materials are values with
+// named parameters; a switch over a small enum rather than virtual dispatch in the kernel).
+//
+// Plane strain: the deformation gradient is 2x2 in the plane and F_zz = 1.
+// All stresses are per unit reference area (P, S) or current area (Cauchy), in the units of
+// the Young modulus.
+#include <string>
+
+#include "geometry/vec2.h"
+
+namespace sg {
+
+enum class MaterialLaw {
+  neo_hookean,             // compressible neo-Hookean (default; papers 000-003)
+  saint_venant_kirchhoff,  // linear elastic in Green-Lagrange strain ("Hooke" at small strain)
+};
+
+const char* to_string(MaterialLaw law);
+
+struct MaterialDef {
+  std::string name;
+  MaterialLaw law = MaterialLaw::neo_hookean;
+  double young = 0.0;    // E (stress units)
+  double poisson = 0.3;  // nu, in (-1, 0.5)
+  double density = 1.0;  // rho (mass per unit area in 2D)
+  double damping = 0.0;  // alpha, stiffness-proportional Rayleigh coefficient (time units)
+};
+
+// Throws sg::Error naming the material and the bad value.
+void validate(const MaterialDef& def);
+
+// Coefficients the kernel uses, derived once from a MaterialDef.
+struct MaterialParams {
+  MaterialLaw law = MaterialLaw::neo_hookean;
+  double lambda = 0.0;   // first Lame parameter (plane strain: the 3D one)
+  double mu = 0.0;       // shear modulus
+  double density = 1.0;
+  double damping = 0.0;  // alpha
+};
+
+MaterialParams make_material_params(const MaterialDef& def);
+
+// P-wave speed sqrt((lambda + 2 mu) / rho) of the reference state.
+double p_wave_speed(const MaterialParams& m);
+
+// The first Piola-Kirchhoff stress and the strain energy density W (per reference area).
+// Requires det F > 0 (the caller checks).
+struct ElasticResponse {
+  Mat2 first_piola;
+  double energy_density;
+};
+ElasticResponse elastic_response(const MaterialParams& m, const Mat2& f);
+
+// Viscous second Piola-Kirchhoff stress of the stiffness-proportional (Kelvin-Voigt)
+// damping: S_v = alpha * C0 : E_dot, with E_dot = sym(F^T F_dot) the Green-Lagrange strain
+// rate and C0 = dS/dE at the reference state (isotropic: lambda tr(E_dot) I + 2 mu E_dot).
+//
+// Why the reference tangent C0 and not the current dS/dE: (1) for the neo-Hookean law the
+// current tangent is lambda C^-1 (x) C^-1 + 2 (mu - lambda ln J) I_{C^-1}, which loses
+// positive definiteness as soon as ln J > mu / lambda (J > 1.01 for nu = 0.495): damping would
+// then create energy; (2) at small strain C0 is exactly what the papers' Rayleigh damping
+// alpha K0 v uses (paper 001 §2.1 quotes E "ignoring finite-strain effects on the tangent").
+// Unlike alpha K0 v it is objective: a rigid rotation has E_dot = 0 and is never damped.
+// The dissipated power density is S_v : E_dot >= 0.
+Mat2 viscous_second_piola(const MaterialParams& m, const Mat2& strain_rate);
+
+// Full plane-strain Cauchy stress, in-plane components and the out-of-plane sigma_zz.
+struct CauchyStress {
+  double xx, yy, xy, zz;
+  double von_mises() const;
+  double pressure() const { return -(xx + yy + zz) / 3.0; }
+};
+CauchyStress cauchy_stress(const MaterialParams& m, const Mat2& f);
+
+}  // namespace sg
