@@ -1,0 +1,232 @@
+#include "contact/broad_phase.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "geometry/polygon.h"
+
+namespace sg {
+
+void validate(const BroadPhaseParams& params) {
+  SG_VERIFY(std::isfinite(params.cutoff) && params.cutoff > 0.0,
+            "contact broad phase: cutoff must be > 0, got " << params.cutoff);
+  SG_VERIFY(std::isfinite(params.skin) && params.skin >= 0.0,
+            "contact broad phase: skin must be >= 0, got " << params.skin);
+  if (params.periodic_x) {
+    SG_VERIFY(
+        std::isfinite(params.x_min) && std::isfinite(params.x_max) && params.x_max > params.x_min,
+        "contact broad phase: periodic cell [" << params.x_min << ", " << params.x_max
+                                               << ") is empty");
+  }
+}
+
+double nearest_image_shift(const BroadPhaseParams& params, const Vec2& node, const Vec2& a,
+                           const Vec2& b) {
+  if (!params.periodic_x) return 0.0;
+  const double period = params.x_max - params.x_min;
+  return period * std::round((0.5 * (a.x() + b.x()) - node.x()) / period);
+}
+
+BroadPhase::BroadPhase(const BroadPhaseParams& params) : params_(params) {
+  validate(params_);
+}
+
+namespace {
+
+// Geometry of the cell grid for one build. Cells are at least `reach` wide in both
+// directions, so everything within `reach` of a point lies in the 3 x 3 block of cells
+// around the point's cell.
+struct Grid {
+  bool periodic = false;
+  double x0 = 0.0, y0 = 0.0;          // origin
+  double cell_w = 1.0, cell_h = 1.0;  // cell sizes
+  int nx = 1, ny = 1;
+
+  // Unwrapped column index (periodic: may be outside [0, nx)).
+  long long column(double x) const { return static_cast<long long>(std::floor((x - x0) / cell_w)); }
+  int wrap_column(long long c) const {
+    if (!periodic) return static_cast<int>(std::clamp<long long>(c, 0, nx - 1));
+    const long long m = c % nx;
+    return static_cast<int>(m < 0 ? m + nx : m);
+  }
+  int row(double y) const {
+    const long long r = static_cast<long long>(std::floor((y - y0) / cell_h));
+    return static_cast<int>(std::clamp<long long>(r, 0, ny - 1));
+  }
+  int cell(int column_index, int row_index) const { return row_index * nx + column_index; }
+};
+
+}  // namespace
+
+void BroadPhase::build(const BroadPhaseInput& input) {
+  const std::size_t node_count = input.nodes.size();
+  const std::size_t segment_count = input.segment_start.size();
+  SG_VERIFY(input.node_body.size() == node_count,
+            "contact broad phase: " << node_count << " nodes but " << input.node_body.size()
+                                    << " node owners");
+  SG_VERIFY(input.segment_end.size() == segment_count && input.segment_body.size() == segment_count,
+            "contact broad phase: segment arrays differ in size ("
+                << segment_count << " starts, " << input.segment_end.size() << " ends, "
+                << input.segment_body.size() << " owners)");
+
+  ++build_count_;
+  built_nodes_.assign(input.nodes.begin(), input.nodes.end());
+  built_segment_start_.assign(input.segment_start.begin(), input.segment_start.end());
+  built_segment_end_.assign(input.segment_end.begin(), input.segment_end.end());
+  candidates_.clear();
+  if (node_count == 0 || segment_count == 0) return;
+
+  const double reach = params_.cutoff + params_.skin;
+  // Pairs are accepted up to reach (1 + 1e-12): round-off in the distance must not turn the
+  // strict guarantee of the header into a miss. Cells get a 1e-9 relative margin over reach,
+  // far above the round-off of cell indices for coordinates up to ~1e6 reach.
+  const double accept = reach * (1.0 + 1e-12);
+  const double min_cell = reach * (1.0 + 1e-9);
+  const double period = params_.x_max - params_.x_min;
+
+  // Bounding box of everything, and the widest segment in x.
+  Vec2 lo = input.nodes[0], hi = input.nodes[0];
+  double widest = 0.0;
+  for (const Vec2& p : input.nodes) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  for (std::size_t s = 0; s < segment_count; ++s) {
+    const Vec2 &a = input.segment_start[s], &b = input.segment_end[s];
+    lo = lo.cwiseMin(a).cwiseMin(b);
+    hi = hi.cwiseMax(a).cwiseMax(b);
+    widest = std::max(widest, std::abs(b.x() - a.x()));
+  }
+  SG_VERIFY(lo.allFinite() && hi.allFinite(),
+            "contact broad phase: a node or segment position is not finite");
+  if (params_.periodic_x) {
+    SG_VERIFY(period > 2.0 * reach + widest,
+              "contact broad phase: the periodic cell (length "
+                  << period << ") must be longer than 2 (cutoff + skin) + the widest segment = "
+                  << 2.0 * reach + widest << " so that a node meets one image of a segment");
+  }
+
+  // Cell size: at least `reach`; coarser if the grid would have many more cells than
+  // objects (memory and clearing cost), which only costs more distance tests.
+  const double max_cells = 4.0 * static_cast<double>(node_count + segment_count) + 16.0;
+  const double width = params_.periodic_x ? period : hi.x() - lo.x();
+  const double height = hi.y() - lo.y();
+  double cell = min_cell;
+  Grid grid;
+  grid.periodic = params_.periodic_x;
+  for (;;) {
+    if (grid.periodic) {
+      grid.x0 = params_.x_min;
+      grid.nx = std::max(1, static_cast<int>(std::floor(period / cell)));
+      grid.cell_w = period / grid.nx;  // >= cell: the columns tile the period exactly
+    } else {
+      grid.x0 = lo.x();
+      grid.nx = static_cast<int>(std::floor(width / cell)) + 1;
+      grid.cell_w = cell;
+    }
+    grid.y0 = lo.y();
+    grid.ny = static_cast<int>(std::floor(height / cell)) + 1;
+    grid.cell_h = cell;
+    const double cells = static_cast<double>(grid.nx) * static_cast<double>(grid.ny);
+    if (cells <= max_cells) break;
+    cell *= std::max(1.1, std::sqrt(cells / max_cells));
+  }
+
+  // Bin the segments: a segment goes in every cell its bounding box overlaps (counting
+  // sort, segment-major, so each cell lists its segments in increasing index order).
+  const std::size_t cell_count =
+      static_cast<std::size_t>(grid.nx) * static_cast<std::size_t>(grid.ny);
+  cell_start_.assign(cell_count + 1, 0);
+  const auto for_each_cell_of_segment = [&](std::size_t s, auto&& visit) {
+    const Vec2 &a = input.segment_start[s], &b = input.segment_end[s];
+    const long long c_lo = grid.column(std::min(a.x(), b.x()));
+    long long c_hi = grid.column(std::max(a.x(), b.x()));
+    if (grid.periodic) c_hi = std::min(c_hi, c_lo + grid.nx - 1);  // all columns at most once
+    const int r_lo = grid.row(std::min(a.y(), b.y())), r_hi = grid.row(std::max(a.y(), b.y()));
+    for (long long c = c_lo; c <= c_hi; ++c) {
+      const int column = grid.wrap_column(c);
+      for (int r = r_lo; r <= r_hi; ++r)
+        visit(grid.cell(column, r));
+    }
+  };
+  for (std::size_t s = 0; s < segment_count; ++s) {
+    for_each_cell_of_segment(s, [&](int c) { ++cell_start_[static_cast<std::size_t>(c) + 1]; });
+  }
+  for (std::size_t c = 0; c < cell_count; ++c)
+    cell_start_[c + 1] += cell_start_[c];
+  cell_segments_.resize(static_cast<std::size_t>(cell_start_[cell_count]));
+  std::vector<int> fill(cell_start_.begin(), cell_start_.end() - 1);
+  for (std::size_t s = 0; s < segment_count; ++s) {
+    for_each_cell_of_segment(s, [&](int c) {
+      cell_segments_[static_cast<std::size_t>(fill[static_cast<std::size_t>(c)]++)] =
+          static_cast<int>(s);
+    });
+  }
+
+  // Query every node in index order: the 3 x 3 block of cells around it (distinct columns
+  // only: with fewer than 3 columns a periodic block wraps onto itself).
+  for (std::size_t n = 0; n < node_count; ++n) {
+    const Vec2& node = input.nodes[n];
+    const long long c_node = grid.column(node.x());
+    const int r_node = grid.row(node.y());
+    int columns[3];
+    int column_count = 0;
+    for (long long dc = -1; dc <= 1; ++dc) {
+      const long long c = c_node + dc;
+      if (!grid.periodic && (c < 0 || c >= grid.nx)) continue;
+      const int column = grid.wrap_column(c);
+      if (std::find(columns, columns + column_count, column) == columns + column_count)
+        columns[column_count++] = column;
+    }
+    scratch_.clear();
+    for (int k = 0; k < column_count; ++k) {
+      for (int r = std::max(0, r_node - 1); r <= std::min(grid.ny - 1, r_node + 1); ++r) {
+        const std::size_t c = static_cast<std::size_t>(grid.cell(columns[k], r));
+        for (int i = cell_start_[c]; i < cell_start_[c + 1]; ++i) {
+          const int s = cell_segments_[static_cast<std::size_t>(i)];
+          if (input.segment_body[static_cast<std::size_t>(s)] != input.node_body[n])
+            scratch_.push_back(s);
+        }
+      }
+    }
+    std::sort(scratch_.begin(), scratch_.end());
+    scratch_.erase(std::unique(scratch_.begin(), scratch_.end()), scratch_.end());
+    for (const int s : scratch_) {
+      const Vec2& a = input.segment_start[static_cast<std::size_t>(s)];
+      const Vec2& b = input.segment_end[static_cast<std::size_t>(s)];
+      // The only image that can be within reach is the nearest one of the segment's
+      // centre (period > 2 reach + widest segment, checked above).
+      const double shift = nearest_image_shift(params_, node, a, b);
+      const double distance = project_on_segment(node + Vec2(shift, 0.0), a, b).distance;
+      if (distance <= accept) candidates_.push_back({static_cast<int>(n), s, shift});
+    }
+  }
+}
+
+bool BroadPhase::needs_rebuild(const BroadPhaseInput& input) const {
+  if (build_count_ == 0) return true;
+  if (input.nodes.size() != built_nodes_.size() ||
+      input.segment_start.size() != built_segment_start_.size() ||
+      input.segment_end.size() != built_segment_end_.size())
+    return true;
+  const double period = params_.x_max - params_.x_min;
+  const double limit2 = 0.25 * params_.skin * params_.skin;  // (skin / 2)^2
+  const auto moved_too_far = [&](const Vec2& now, const Vec2& then) {
+    Vec2 d = now - then;
+    // Nearest image: a position wrapped across the seam has not moved by L.
+    if (params_.periodic_x) d.x() -= period * std::round(d.x() / period);
+    return d.squaredNorm() > limit2;
+  };
+  for (std::size_t i = 0; i < built_nodes_.size(); ++i) {
+    if (moved_too_far(input.nodes[i], built_nodes_[i])) return true;
+  }
+  for (std::size_t i = 0; i < built_segment_start_.size(); ++i) {
+    if (moved_too_far(input.segment_start[i], built_segment_start_[i]) ||
+        moved_too_far(input.segment_end[i], built_segment_end_[i]))
+      return true;
+  }
+  return false;
+}
+
+}  // namespace sg

@@ -1,0 +1,97 @@
+#pragma once
+// Broad phase of the node-to-segment contact: which (slave node, master segment) pairs are
+// close enough to be worth a narrow-phase projection (node_segment.h). A uniform cell grid,
+// periodic in x, with a Verlet skin so that it is rebuilt every few steps, not every step.
+//
+// Inputs are flat arrays (ids, not pointers): every contour node of every body with its
+// owner body, and every contour segment as its two end points with its owner body. A node
+// is never paired with a segment of its own body (no self-contact).
+//
+// Periodicity in x over [x_min, x_max), period L = x_max - x_min. Positions need not be
+// wrapped into the cell (a body crossing the seam may keep contiguous coordinates). A
+// candidate carries the shift, a multiple of L, that brings the node next to the segment:
+// the narrow phase projects (node + (shift_x, 0)) on the segment. The period must exceed
+// 2 (cutoff + skin) + the longest segment's x-extent, so that at most one image of a
+// segment is ever within reach of a node (checked, with a clear error).
+//
+// Guarantee (no missed contact). build() lists every pair whose distance (point to
+// segment, nearest periodic image) is < cutoff + skin. The distance from a point to a
+// segment changes by at most the point's displacement plus the largest displacement of
+// the segment's end points (every point of the segment is a convex combination of them).
+// So as long as needs_rebuild() is false - no node and no segment end point has moved by
+// more than skin / 2 (nearest-image displacement) since the last build - every pair whose
+// current distance is < cutoff is in candidates():  d_build <= d_now + skin/2 + skin/2
+// < cutoff + skin. The test test_broad_phase.cpp checks this against brute force on random
+// moving configurations that cross the periodic seam.
+//
+// Determinism: candidates are sorted by (node, segment); nothing depends on threads or on
+// the order of insertion beyond the input indices.
+#include <span>
+#include <vector>
+
+#include "geometry/vec2.h"
+
+namespace sg {
+
+struct BroadPhaseParams {
+  double cutoff = 0.0;      // contact search distance: pairs closer than this are needed [L]
+  double skin = 0.0;        // Verlet margin added at build time [L]
+  bool periodic_x = false;  // periodic images in x over [x_min, x_max)
+  double x_min = 0.0;
+  double x_max = 0.0;
+};
+
+// Throws sg::Error if cutoff <= 0, skin < 0, or the periodic cell is empty.
+void validate(const BroadPhaseParams& params);
+
+struct BroadPhaseInput {
+  std::span<const Vec2> nodes;          // slave points (contour nodes of all bodies)
+  std::span<const int> node_body;       // owner body of each node
+  std::span<const Vec2> segment_start;  // master segments: end points ...
+  std::span<const Vec2> segment_end;
+  std::span<const int> segment_body;  // ... and owner body
+};
+
+// The multiple of the period to add to a node's x to bring it next to segment [a, b]: the
+// nearest image of the segment's centre (0 when not periodic). Recompute it at each
+// narrow-phase evaluation if positions are wrapped into the cell between builds (a wrap
+// changes a node's x by L without moving it).
+double nearest_image_shift(const BroadPhaseParams& params, const Vec2& node, const Vec2& a,
+                           const Vec2& b);
+
+struct ContactCandidate {
+  int node = 0;
+  int segment = 0;
+  double shift_x = 0.0;  // node + (shift_x, 0) is next to the segment (at build positions)
+  friend bool operator==(const ContactCandidate&, const ContactCandidate&) = default;
+};
+
+class BroadPhase {
+ public:
+  explicit BroadPhase(const BroadPhaseParams& params);
+
+  // Lists all pairs closer than cutoff + skin; remembers the positions for needs_rebuild().
+  void build(const BroadPhaseInput& input);
+
+  // True before the first build, when the numbers of nodes or segments changed, or when a
+  // node or a segment end point moved by more than skin / 2 since the last build.
+  bool needs_rebuild(const BroadPhaseInput& input) const;
+
+  // Sorted by (node, segment).
+  std::span<const ContactCandidate> candidates() const { return candidates_; }
+  const BroadPhaseParams& params() const { return params_; }
+  int build_count() const { return build_count_; }
+
+ private:
+  BroadPhaseParams params_;
+  int build_count_ = 0;
+  std::vector<ContactCandidate> candidates_;
+  // Positions at the last build (for the skin criterion).
+  std::vector<Vec2> built_nodes_, built_segment_start_, built_segment_end_;
+  // Cell grid, rebuilt with the list: segments of cell c are cell_segments_[cell_start_[c]
+  // .. cell_start_[c+1]) in increasing index order.
+  std::vector<int> cell_start_, cell_segments_;
+  std::vector<int> scratch_;  // candidate segments of one node
+};
+
+}  // namespace sg
