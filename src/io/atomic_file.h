@@ -1,0 +1,16 @@
+#pragma once
+// Atomic writes: the content goes to "<path>.tmp" then is renamed over <path>, so a reader
+// (or a run killed mid-write) never sees a half-written file.
+#include <filesystem>
+#include <functional>
+#include <ostream>
+#include <string>
+
+namespace sg {
+
+// Calls write(stream) on a temporary file next to `path`, then renames it to `path`.
+// Throws sg::Error naming the path if anything fails.
+void write_file_atomically(const std::filesystem::path& path,
+                           const std::function<void(std::ostream&)>& write);
+
+}  // namespace sg

@@ -1,0 +1,115 @@
+#include "io/vtk_writer.h"
+
+#include <iomanip>
+
+#include "io/atomic_file.h"
+#include "model/kinematics.h"
+
+namespace sg {
+
+namespace {
+
+struct NodalFields {
+  std::vector<Vec2> position, displacement, velocity;
+  std::vector<CauchyStress> stress;
+  std::vector<double> strain_norm;
+  std::vector<int> body_id, material_id;
+};
+
+NodalFields evaluate_fields(const Model& model) {
+  NodalFields f;
+  const std::size_t n = model.node_count();
+  f.position.resize(n);
+  f.displacement.resize(n);
+  f.velocity.resize(n);
+  f.stress.resize(n);
+  f.strain_norm.resize(n);
+  f.body_id.resize(n);
+  f.material_id.resize(n);
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const Body& body = model.bodies[b];
+    const MaterialParams& m = model.materials[static_cast<std::size_t>(body.material)];
+    for (int i = body.node_begin; i < body.node_end; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      const Vec2 x = node_position(model, i);
+      f.position[k] = x;
+      f.displacement[k] = x - Vec2(model.nodes.ref_x[k], model.nodes.ref_y[k]);
+      f.velocity[k] = node_velocity(model, i);
+      const Mat2 grad = node_deformation_gradient(model, i);
+      f.stress[k] = grad.determinant() > 0.0 ? cauchy_stress(m, grad) : CauchyStress{0, 0, 0, 0};
+      f.strain_norm[k] = (0.5 * (grad.transpose() * grad - Mat2::Identity())).norm();
+      f.body_id[k] = static_cast<int>(b);
+      f.material_id[k] = body.material;
+    }
+  }
+  return f;
+}
+
+template <typename Get>
+void scalar_array(std::ostream& out, const char* name, std::size_t n, Get&& get) {
+  out << "        <DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < n; ++i) out << get(i) << (i % 8 == 7 ? '\n' : ' ');
+  out << "\n        </DataArray>\n";
+}
+
+void vector_array(std::ostream& out, const char* name, const std::vector<Vec2>& v) {
+  out << "        <DataArray type=\"Float64\" Name=\"" << name
+      << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < v.size(); ++i)
+    out << v[i].x() << ' ' << v[i].y() << " 0" << (i % 4 == 3 ? '\n' : ' ');
+  out << "\n        </DataArray>\n";
+}
+
+}  // namespace
+
+void write_vtu_snapshot(const Model& model, const std::filesystem::path& path) {
+  const NodalFields f = evaluate_fields(model);
+  const std::size_t n = model.node_count();
+  const std::size_t cells = model.triangles.size();
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << std::setprecision(9);
+    out << "<?xml version=\"1.0\"?>\n"
+           "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+           "  <UnstructuredGrid>\n"
+        << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << cells << "\">\n"
+        << "      <Points>\n";
+    vector_array(out, "position", f.position);
+    out << "      </Points>\n      <Cells>\n"
+           "        <DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n";
+    for (const auto& t : model.triangles) out << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+    out << "        </DataArray>\n"
+           "        <DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n";
+    for (std::size_t c = 0; c < cells; ++c) out << 3 * (c + 1) << (c % 16 == 15 ? '\n' : ' ');
+    out << "\n        </DataArray>\n"
+           "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+    for (std::size_t c = 0; c < cells; ++c) out << "5" << (c % 32 == 31 ? '\n' : ' ');  // VTK_TRIANGLE
+    out << "\n        </DataArray>\n      </Cells>\n"
+           "      <PointData Scalars=\"von_mises\" Vectors=\"velocity\">\n";
+    vector_array(out, "displacement", f.displacement);
+    vector_array(out, "velocity", f.velocity);
+    scalar_array(out, "sigma_xx", n, [&](std::size_t i) { return f.stress[i].xx; });
+    scalar_array(out, "sigma_yy", n, [&](std::size_t i) { return f.stress[i].yy; });
+    scalar_array(out, "sigma_xy", n, [&](std::size_t i) { return f.stress[i].xy; });
+    scalar_array(out, "von_mises", n, [&](std::size_t i) { return f.stress[i].von_mises(); });
+    scalar_array(out, "pressure", n, [&](std::size_t i) { return f.stress[i].pressure(); });
+    scalar_array(out, "green_lagrange_norm", n, [&](std::size_t i) { return f.strain_norm[i]; });
+    scalar_array(out, "body_id", n, [&](std::size_t i) { return f.body_id[i]; });
+    scalar_array(out, "material_id", n, [&](std::size_t i) { return f.material_id[i]; });
+    out << "      </PointData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
+  });
+}
+
+void PvdCollection::add(double time, const std::string& relative_file) {
+  entries_.emplace_back(time, relative_file);
+  write_file_atomically(path_, [&](std::ostream& out) {
+    out << std::setprecision(12)
+        << "<?xml version=\"1.0\"?>\n"
+           "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+           "  <Collection>\n";
+    for (const auto& [t, file] : entries_)
+      out << "    <DataSet timestep=\"" << t << "\" part=\"0\" file=\"" << file << "\"/>\n";
+    out << "  </Collection>\n</VTKFile>\n";
+  });
+}
+
+}  // namespace sg

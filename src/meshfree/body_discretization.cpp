@@ -1,0 +1,48 @@
+#include "meshfree/body_discretization.h"
+
+#include "core/error.h"
+#include "meshfree/triangle_quadrature.h"
+
+namespace sg {
+
+BodyDiscretization discretize_mesh(DomainMesh mesh, const DiscretizationParams& params,
+                                   const std::string& body_name) {
+  BodyDiscretization d;
+  d.mesh = std::move(mesh);
+  const std::vector<Vec2>& nodes = d.mesh.nodes;
+  const MlsShapeFunctions mls(nodes, params.mls, body_name);
+  d.support_radius = mls.support_radius();
+
+  const TriangleRule& rule = triangle_rule(params.gauss_points);
+  for (const auto& tri : d.mesh.triangles) {
+    const Vec2 &a = nodes[static_cast<std::size_t>(tri[0])],
+               &b = nodes[static_cast<std::size_t>(tri[1])],
+               &c = nodes[static_cast<std::size_t>(tri[2])];
+    const double area = 0.5 * cross(b - a, c - a);
+    SG_VERIFY(area > 0.0, "body '" << body_name << "': triangle (" << tri[0] << ", " << tri[1]
+                                   << ", " << tri[2] << ") has non-positive area " << area);
+    for (std::size_t q = 0; q < rule.weight.size(); ++q) {
+      const auto& l = rule.barycentric[q];
+      const Vec2 x = l[0] * a + l[1] * b + l[2] * c;
+      mls.evaluate(x, d.gauss_rows);
+      d.gauss_weight.push_back(rule.weight[q] * area);
+      d.gauss_position.push_back(x);
+    }
+  }
+  for (const Vec2& x : nodes) mls.evaluate(x, d.node_rows);
+
+  d.lumped_volume.assign(nodes.size(), 0.0);
+  for (std::size_t g = 0; g < d.gauss_rows.points(); ++g)
+    for (auto k = d.gauss_rows.offset[g]; k < d.gauss_rows.offset[g + 1]; ++k)
+      d.lumped_volume[static_cast<std::size_t>(d.gauss_rows.node[static_cast<std::size_t>(k)])] +=
+          d.gauss_weight[g] * d.gauss_rows.value[static_cast<std::size_t>(k)];
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    SG_VERIFY(d.lumped_volume[i] > 0.0,
+              "body '" << body_name << "': node " << i << " at (" << nodes[i].x() << ", "
+                       << nodes[i].y() << ") gets a non-positive lumped mass ("
+                       << d.lumped_volume[i]
+                       << " x density); refine the node spacing or increase the MLS support");
+  return d;
+}
+
+}  // namespace sg

@@ -1,0 +1,45 @@
+#pragma once
+// Discretization of one deformable body: its field nodes, their triangulation, the Gauss
+// points with their MLS rows, the MLS rows at the nodes themselves, and the lumped
+// nodal volumes. Everything is in the body's reference configuration and local numbering;
+// the model copies it into global arrays.
+#include <string>
+#include <vector>
+
+#include "meshfree/domain_mesh.h"
+#include "meshfree/mls.h"
+#include "meshfree/shape_rows.h"
+
+namespace sg {
+
+struct DiscretizationParams {
+  DomainMeshParams mesh;
+  MlsParams mls;
+  int gauss_points = 3;  // per triangle: 1, 3, 6 or 7
+};
+
+struct BodyDiscretization {
+  DomainMesh mesh;
+  ShapeRows gauss_rows;              // one row per Gauss point
+  std::vector<double> gauss_weight;  // quadrature weight (area), sums to the body area
+  std::vector<Vec2> gauss_position;  // reference position
+  // One row per node, evaluated at the node's reference position: the physical position of
+  // node I is X_I + sum_J N_J(X_I) u_J (MLS does not interpolate), and a force applied there
+  // is spread back with the same N_J(X_I).
+  ShapeRows node_rows;
+  std::vector<double> support_radius;
+  // integral of N_I over the body (row-sum lumping): nodal mass = density * lumped_volume.
+  // Partition of unity makes the total exact: sum_I lumped_volume_I = area.
+  std::vector<double> lumped_volume;
+};
+
+// Meshes the domain bounded by `boundary` (CCW, sampled at about the node spacing) and
+// discretizes it.
+BodyDiscretization discretize_body(const Polygon& boundary, const DiscretizationParams& params,
+                                   const std::string& body_name);
+
+// Same from an existing node set and triangulation (tests, imported meshes).
+BodyDiscretization discretize_mesh(DomainMesh mesh, const DiscretizationParams& params,
+                                   const std::string& body_name);
+
+}  // namespace sg

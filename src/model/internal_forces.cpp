@@ -1,0 +1,103 @@
+#include "model/internal_forces.h"
+
+#include <cmath>
+#include <vector>
+
+#include "core/error.h"
+
+namespace sg {
+
+BodyForceResult add_body_internal_forces(const Model& model, BodyId body_id, const double* ux,
+                                         const double* uy, const double* vx, const double* vy,
+                                         double* fx, double* fy, bool with_damping) {
+  const Body& body = model.bodies[static_cast<std::size_t>(body_id)];
+  const MaterialParams& material = model.materials[static_cast<std::size_t>(body.material)];
+  const bool damped = with_damping && material.damping > 0.0;
+  const ShapeRows& rows = model.gauss_rows;
+  const std::int32_t* offset = rows.offset.data();
+  const std::int32_t* node = rows.node.data();
+  const double* dndx = rows.dndx.data();
+  const double* dndy = rows.dndy.data();
+
+  BodyForceResult result;
+  for (int g = body.gauss_begin; g < body.gauss_end; ++g) {
+    const auto begin = offset[g], end = offset[g + 1];
+    // Displacement gradient H = F - I and its rate.
+    double h00 = 0, h01 = 0, h10 = 0, h11 = 0;
+    double r00 = 0, r01 = 0, r10 = 0, r11 = 0;
+    for (auto k = begin; k < end; ++k) {
+      const auto j = node[k];
+      h00 += ux[j] * dndx[k];
+      h01 += ux[j] * dndy[k];
+      h10 += uy[j] * dndx[k];
+      h11 += uy[j] * dndy[k];
+    }
+    Mat2 f;
+    f << 1.0 + h00, h01, h10, 1.0 + h11;
+    const double jacobian = f.determinant();
+    if (!(jacobian > 0.0) || !std::isfinite(jacobian)) {
+      result.bad_gauss_point = g;
+      result.bad_jacobian = jacobian;
+      return result;
+    }
+    const ElasticResponse elastic = elastic_response(material, f);
+    Mat2 p = elastic.first_piola;
+    const double w = model.gauss_weight[static_cast<std::size_t>(g)];
+    result.elastic_energy += w * elastic.energy_density;
+    if (damped) {
+      for (auto k = begin; k < end; ++k) {
+        const auto j = node[k];
+        r00 += vx[j] * dndx[k];
+        r01 += vx[j] * dndy[k];
+        r10 += vy[j] * dndx[k];
+        r11 += vy[j] * dndy[k];
+      }
+      Mat2 f_rate;
+      f_rate << r00, r01, r10, r11;
+      // Green-Lagrange strain rate E_dot = sym(F^T F_dot): zero for any rigid motion.
+      const Mat2 ft_fdot = f.transpose() * f_rate;
+      const Mat2 strain_rate = 0.5 * (ft_fdot + ft_fdot.transpose());
+      const Mat2 s_viscous = viscous_second_piola(material, strain_rate);
+      p += f * s_viscous;
+      result.damping_power += w * (s_viscous.array() * strain_rate.array()).sum();
+    }
+    // f_J -= w P grad0 N_J
+    const double p00 = w * p(0, 0), p01 = w * p(0, 1), p10 = w * p(1, 0), p11 = w * p(1, 1);
+    for (auto k = begin; k < end; ++k) {
+      const auto j = node[k];
+      fx[j] -= p00 * dndx[k] + p01 * dndy[k];
+      fy[j] -= p10 * dndx[k] + p11 * dndy[k];
+    }
+  }
+  return result;
+}
+
+InternalForceResult add_internal_forces(Model& model) {
+  const int body_count = static_cast<int>(model.bodies.size());
+  std::vector<BodyForceResult> per_body(model.bodies.size());
+  NodeState& n = model.nodes;
+#pragma omp parallel for schedule(dynamic, 8)
+  for (int b = 0; b < body_count; ++b) {
+    const Body& body = model.bodies[static_cast<std::size_t>(b)];
+    if (body.kind != BodyKind::deformable) continue;
+    const auto o = static_cast<std::size_t>(body.node_begin);
+    per_body[static_cast<std::size_t>(b)] =
+        add_body_internal_forces(model, b, n.ux.data() + o, n.uy.data() + o, n.vx.data() + o,
+                                 n.vy.data() + o, n.fx.data() + o, n.fy.data() + o);
+  }
+  InternalForceResult total;
+  for (int b = 0; b < body_count; ++b) {
+    const BodyForceResult& r = per_body[static_cast<std::size_t>(b)];
+    if (r.bad_gauss_point >= 0) {
+      const Body& body = model.bodies[static_cast<std::size_t>(b)];
+      SG_THROW("body '" << body.name << "': invalid deformation at Gauss point "
+                        << r.bad_gauss_point - body.gauss_begin << " (det F = " << r.bad_jacobian
+                        << "): the body is inverted or the step exploded");
+    }
+    total.elastic_energy += r.elastic_energy;
+    total.damping_power += r.damping_power;
+  }
+  return total;
+}
+
+}  // namespace sg

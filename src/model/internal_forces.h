@@ -1,0 +1,37 @@
+#pragma once
+// Total Lagrangian internal forces of deformable bodies (DESIGN.md §2 "Finite strain"):
+//   F   = I + sum_J u_J (x) grad0 N_J          at each Gauss point
+//   F'  =     sum_J v_J (x) grad0 N_J          (rate, for the damping)
+//   P   = P_el(F) + F S_v,  S_v = alpha C0 : sym(F^T F')
+//   f_J -= w_gp P grad0 N_J
+// The kernel streams through the precomputed rows; no allocation, no branches on strings.
+#include "model/model.h"
+
+namespace sg {
+
+// What a body's force evaluation measured. A Gauss point with det F <= 0 or a non-finite
+// value stops the evaluation of that body and is reported (the caller adds the step).
+struct BodyForceResult {
+  double elastic_energy = 0.0;  // integral of W over the body
+  double damping_power = 0.0;   // integral of S_v : E_dot (>= 0)
+  int bad_gauss_point = -1;     // global index of the first invalid Gauss point, or -1
+  double bad_jacobian = 0.0;    // det F there
+};
+
+// Adds the internal forces of `body` into fx, fy. Arrays point at the body's first node
+// (local numbering of the rows). With `with_damping` false the viscous stress is skipped.
+BodyForceResult add_body_internal_forces(const Model& model, BodyId body, const double* ux,
+                                         const double* uy, const double* vx, const double* vy,
+                                         double* fx, double* fy, bool with_damping = true);
+
+struct InternalForceResult {
+  double elastic_energy = 0.0;
+  double damping_power = 0.0;
+};
+
+// All deformable bodies, in parallel over bodies (each writes only its own node range,
+// and the energies are reduced in body order: results do not depend on the thread count).
+// Throws sg::Error naming the body and the Gauss point if a deformation is invalid.
+InternalForceResult add_internal_forces(Model& model);
+
+}  // namespace sg

@@ -1,0 +1,55 @@
+#pragma once
+// A scenario: everything one simulation needs, as checked definitions (STYLE.md habit 7:
+// definition structs with defaults and units). The scenario layer turns TOML into these;
+// the engine never sees a file. docs/scenario.md documents every key.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "material/material.h"
+#include "meshfree/body_discretization.h"
+#include "model/model.h"
+
+namespace sg {
+
+enum class GrainShape { disc, ellipse };
+
+struct GrainDef {
+  std::string name;
+  GrainShape shape = GrainShape::disc;
+  Vec2 center = Vec2::Zero();        // length
+  double radius = 0.5;               // disc radius (length)
+  Vec2 semi_axes = Vec2(0.5, 0.5);   // ellipse semi-axes (length)
+  double angle = 0.0;                // ellipse orientation (rad)
+  std::string material;
+  Vec2 velocity = Vec2::Zero();      // initial velocity (length / time)
+  double spin = 0.0;                 // initial angular velocity (rad / time)
+  Vec2 stretch = Vec2(1.0, 1.0);     // initial homogeneous stretch along x and y (1 = none)
+};
+
+struct ScenarioDef {
+  std::filesystem::path source;  // the scenario file
+  std::string name;              // run name: outputs go to <output_root>/<name>/
+  // [time]
+  double duration = 1.0;           // simulated time
+  double time_step_safety = 0.9;   // fraction of the estimated critical step
+  double fixed_time_step = 0.0;    // > 0: use this step instead of the estimate
+  // [output]
+  std::filesystem::path output_root = "out";
+  double series_period = 0.0;      // time between rows of series.csv (0: 1/200 of duration)
+  double field_period = 0.0;       // time between VTK snapshots (0: 1/20 of duration)
+  // [discretization]
+  DiscretizationParams discretization;
+  // [physics]
+  Vec2 gravity = Vec2::Zero();
+  std::vector<MaterialDef> materials;
+  std::vector<GrainDef> grains;
+};
+
+// Reads and validates a scenario file. Errors: "<file>:<line>: key '<key>': <expected>".
+ScenarioDef load_scenario(const std::filesystem::path& file);
+
+// Builds the model (discretizes every grain, sets initial velocities and stretches).
+Model build_model(const ScenarioDef& scenario);
+
+}  // namespace sg

@@ -1,0 +1,164 @@
+#include "scenario/toml_reader.h"
+
+#include <toml++/toml.h>
+
+#include <set>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace sg {
+
+struct ParsedToml {
+  toml::table table;
+};
+
+TomlDocument::TomlDocument(const std::filesystem::path& file) : file_(file), parsed_(nullptr) {
+  SG_VERIFY(std::filesystem::exists(file), "scenario file '" << file.string() << "' does not exist");
+  try {
+    parsed_ = new ParsedToml{toml::parse_file(file.string())};
+  } catch (const toml::parse_error& e) {
+    SG_THROW(file.string() << ":" << e.source().begin.line << ":" << e.source().begin.column
+                           << ": TOML syntax error: " << e.description());
+  }
+}
+
+TomlDocument::~TomlDocument() { delete parsed_; }
+
+TomlReader TomlDocument::root() const { return TomlReader(parsed_->table, file_, ""); }
+
+TomlReader::TomlReader(const toml::table& table, std::filesystem::path file, std::string prefix)
+    : table_(&table), file_(std::move(file)), prefix_(std::move(prefix)) {}
+
+std::string TomlReader::full_key(const std::string& key) const {
+  return prefix_.empty() ? key : prefix_ + "." + key;
+}
+
+const toml::node* TomlReader::find(const std::string& key) const { return table_->get(key); }
+
+void TomlReader::fail(const std::string& key, const std::string& message) const {
+  const toml::node* n = find(key);
+  const auto line = n ? n->source().begin.line : table_->source().begin.line;
+  SG_THROW(file_.string() << ":" << line << ": key '" << full_key(key) << "': " << message);
+}
+
+bool TomlReader::has(const std::string& key) const { return find(key) != nullptr; }
+
+double TomlReader::as_number(const std::string& key, const toml::node& n) const {
+  if (auto v = n.value<double>()) return *v;  // integers convert too
+  std::ostringstream got;
+  n.visit([&](const auto& value) { got << value; });
+  fail(key, "expected a number, got " + got.str());
+}
+
+double TomlReader::number(const std::string& key) const {
+  const toml::node* n = find(key);
+  if (!n) fail(key, "required number is missing");
+  return as_number(key, *n);
+}
+
+double TomlReader::number(const std::string& key, double fallback) const {
+  const toml::node* n = find(key);
+  return n ? as_number(key, *n) : fallback;
+}
+
+double TomlReader::positive(const std::string& key) const {
+  const double v = number(key);
+  if (!(v > 0.0)) fail(key, "expected a positive number, got " + std::to_string(v));
+  return v;
+}
+
+double TomlReader::positive(const std::string& key, double fallback) const {
+  return has(key) ? positive(key) : fallback;
+}
+
+double TomlReader::non_negative(const std::string& key, double fallback) const {
+  const double v = number(key, fallback);
+  if (!(v >= 0.0)) fail(key, "expected a number >= 0, got " + std::to_string(v));
+  return v;
+}
+
+long TomlReader::integer(const std::string& key, long fallback) const {
+  const toml::node* n = find(key);
+  if (!n) return fallback;
+  if (auto v = n->value_exact<int64_t>()) return static_cast<long>(*v);
+  fail(key, "expected an integer");
+}
+
+std::string TomlReader::string(const std::string& key) const {
+  const toml::node* n = find(key);
+  if (!n) fail(key, "required string is missing");
+  if (auto v = n->value_exact<std::string>()) return *v;
+  fail(key, "expected a string");
+}
+
+std::string TomlReader::string(const std::string& key, const std::string& fallback) const {
+  return has(key) ? string(key) : fallback;
+}
+
+std::string TomlReader::one_of(const std::string& key, std::initializer_list<const char*> choices,
+                               const char* fallback) const {
+  const std::string v = has(key) ? string(key) : std::string(fallback);
+  std::string list;
+  for (const char* c : choices) {
+    if (v == c) return v;
+    list += std::string(list.empty() ? "" : ", ") + "\"" + c + "\"";
+  }
+  fail(key, "expected one of " + list + ", got \"" + v + "\"");
+}
+
+Vec2 TomlReader::vec2(const std::string& key) const {
+  const toml::node* n = find(key);
+  if (!n) fail(key, "required pair [x, y] is missing");
+  const toml::array* a = n->as_array();
+  if (!a || a->size() != 2 || !(*a)[0].value<double>() || !(*a)[1].value<double>())
+    fail(key, "expected a pair of numbers [x, y]");
+  return Vec2(*(*a)[0].value<double>(), *(*a)[1].value<double>());
+}
+
+Vec2 TomlReader::vec2(const std::string& key, const Vec2& fallback) const {
+  return has(key) ? vec2(key) : fallback;
+}
+
+bool TomlReader::boolean(const std::string& key, bool fallback) const {
+  const toml::node* n = find(key);
+  if (!n) return fallback;
+  if (auto v = n->value_exact<bool>()) return *v;
+  fail(key, "expected true or false");
+}
+
+std::optional<TomlReader> TomlReader::table(const std::string& key) const {
+  const toml::node* n = find(key);
+  if (!n) return std::nullopt;
+  const toml::table* t = n->as_table();
+  if (!t) fail(key, "expected a table [" + full_key(key) + "]");
+  return TomlReader(*t, file_, full_key(key));
+}
+
+std::vector<TomlReader> TomlReader::array_of_tables(const std::string& key) const {
+  std::vector<TomlReader> out;
+  const toml::node* n = find(key);
+  if (!n) return out;
+  const toml::array* a = n->as_array();
+  if (!a) fail(key, "expected an array of tables [[" + full_key(key) + "]]");
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const toml::table* t = (*a)[i].as_table();
+    if (!t) fail(key, "expected an array of tables [[" + full_key(key) + "]]");
+    out.emplace_back(*t, file_, full_key(key) + "[" + std::to_string(i) + "]");
+  }
+  return out;
+}
+
+void TomlReader::reject_unknown_keys(std::initializer_list<const char*> known) const {
+  const std::set<std::string> allowed(known.begin(), known.end());
+  for (const auto& [k, v] : *table_) {
+    const std::string key(k.str());
+    if (!allowed.count(key)) {
+      std::string list;
+      for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+      fail(key, "unknown key (known keys here: " + list + ")");
+    }
+  }
+}
+
+}  // namespace sg

@@ -1,0 +1,35 @@
+#pragma once
+// Stable step of the explicit scheme (DESIGN.md §2 "Time integration").
+//
+// Symplectic Euler on a mode of frequency omega with stiffness-proportional damping
+// (xi = alpha omega / 2) is stable iff omega dt <= 2 (sqrt(1 + xi^2) - xi): write the update
+// of (x, dt v) as a 2x2 matrix; its characteristic polynomial l^2 - (2 - a - c) l + (1 - c)
+// with a = (omega dt)^2, c = 2 xi omega dt is Schur stable iff a + 2c < 4 (Jury test).
+// For the papers' parameters the damping, not the wave speed, sets the limit.
+//
+// omega_max is measured per body by power iteration on M^-1 K (K the tangent stiffness at
+// the current state, applied by differencing the force kernel): sharper than the bound
+// 2 c_p / h_min, which ignores how far MLS supports reach.
+#include "model/model.h"
+
+namespace sg {
+
+// Largest stable dt for a mode of angular frequency `omega` with damping coefficient alpha.
+double critical_time_step(double omega, double alpha);
+
+// omega_max of one deformable body at its current state (power iteration, deterministic
+// start vector). Relative accuracy ~1e-3 after the default iterations.
+double estimate_max_frequency(const Model& model, BodyId body, int iterations = 60);
+
+// The 2 c_p / h_min bound of a body (h_min: smallest distance between two of its nodes).
+double wave_speed_frequency_bound(const Model& model, BodyId body);
+
+struct StableStep {
+  double dt = 0.0;            // safety * min over bodies of the critical step
+  BodyId limiting_body = -1;  // the body that sets it
+  double omega_max = 0.0;     // its highest frequency
+  bool damping_limited = false;  // xi > 1 for that body: the damping sets the limit
+};
+StableStep estimate_stable_time_step(const Model& model, double safety);
+
+}  // namespace sg

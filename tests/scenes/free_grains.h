@@ -1,0 +1,44 @@
+#pragma once
+// Shared scenes for tests and benchmarks (STYLE.md habit 12): free deformable grains.
+#include <string>
+
+#include "geometry/shapes.h"
+#include "model/model.h"
+
+namespace sg::scenes {
+
+inline MaterialDef elastic_material(MaterialLaw law = MaterialLaw::neo_hookean, double damping = 0.0,
+                                    double poisson = 0.3, double young = 10.0) {
+  MaterialDef m;
+  m.name = "grain";
+  m.law = law;
+  m.young = young;
+  m.poisson = poisson;
+  m.density = 1.0;
+  m.damping = damping;
+  return m;
+}
+
+inline DiscretizationParams discretization(double spacing, int gauss_points = 3) {
+  DiscretizationParams p;
+  p.mesh.spacing = spacing;
+  p.gauss_points = gauss_points;
+  return p;
+}
+
+// One disc of `radius` centred at `center`, node spacing `spacing`.
+inline BodyId add_disc(Model& model, MaterialId material, const Vec2& center, double radius,
+                       double spacing, const std::string& name = "disc", int gauss_points = 3) {
+  return model.add_deformable_body(name, make_disc(center, radius, spacing), material,
+                                   discretization(spacing, gauss_points));
+}
+
+inline Model single_disc(const MaterialDef& material, double radius, double spacing,
+                         int gauss_points = 3) {
+  Model model;
+  const MaterialId m = model.add_material(material);
+  add_disc(model, m, Vec2(0, 0), radius, spacing, "disc", gauss_points);
+  return model;
+}
+
+}  // namespace sg::scenes
