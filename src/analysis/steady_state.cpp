@@ -1,0 +1,93 @@
+#include "analysis/steady_state.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "analysis/friction.h"
+#include "core/error.h"
+
+namespace sg {
+
+MserResult mser_truncation(std::span<const double> signal, std::size_t batch) {
+  SG_VERIFY(batch >= 1, "MSER batch size must be >= 1, got " << batch);
+  const std::size_t k = signal.size() / batch;  // a trailing partial batch is dropped
+  SG_VERIFY(k >= 2, "MSER needs at least 2 batches of " << batch << " samples, got "
+                                                        << signal.size() << " samples");
+  std::vector<double> z(k);
+  for (std::size_t j = 0; j < k; ++j) {
+    double s = 0.0;
+    for (std::size_t i = 0; i < batch; ++i)
+      s += signal[j * batch + i];
+    z[j] = s / static_cast<double>(batch);
+  }
+  // Two-pass variance per candidate would be O(k^2); suffix sums of z - z_ref keep it O(k)
+  // and, being centred on a typical value, avoid cancellation for signals with a large
+  // mean (forces of order 100 with fluctuations of order 1).
+  const double z_ref = z[k - 1];
+  std::vector<double> s1(k + 1, 0.0), s2(k + 1, 0.0);
+  for (std::size_t j = k; j-- > 0;) {
+    const double u = z[j] - z_ref;
+    s1[j] = s1[j + 1] + u;
+    s2[j] = s2[j + 1] + u * u;
+  }
+  const std::size_t d_max = k / 2;
+  MserResult best;
+  double best_value = std::numeric_limits<double>::infinity();
+  for (std::size_t d = 0; d <= d_max; ++d) {
+    const double n = static_cast<double>(k - d);
+    const double ss = std::max(0.0, s2[d] - s1[d] * s1[d] / n);
+    const double value = ss / (n * n);
+    if (value < best_value) {  // strict: the earliest minimum wins ties
+      best_value = value;
+      best.truncation = d * batch;
+    }
+  }
+  best.at_limit = k >= 4 && best.truncation == d_max * batch;
+  return best;
+}
+
+TimeWindow detect_steady_window(const Series& series, std::span<const DrivenBody> bodies,
+                                std::size_t batch) {
+  SG_VERIFY(!bodies.empty(), series.path << ": no driven body to detect a steady state on");
+  TimeWindow w;
+  w.detected = true;
+  std::size_t start = 0;
+  for (const auto& body : bodies) {
+    const BodyForces f = body_forces(series, body);
+    for (const auto* signal : {&f.normal, &f.tangential}) {
+      const MserResult r = mser_truncation(*signal, batch);
+      start = std::max(start, r.truncation);
+      w.truncation_at_limit = w.truncation_at_limit || r.at_limit;
+    }
+  }
+  const auto time = series.column("time");
+  SG_VERIFY(start + 2 <= time.size(), series.path << ": steady-state window too short");
+  w.first = start;
+  w.last = time.size() - 1;
+  w.t_begin = time[w.first];
+  w.t_end = time[w.last];
+  return w;
+}
+
+TimeWindow window_from_times(const Series& series, double t_begin, double t_end) {
+  const auto time = series.column("time");
+  TimeWindow w;
+  w.detected = false;
+  std::size_t first = time.size(), last = 0, count = 0;
+  for (std::size_t i = 0; i < time.size(); ++i)
+    if (time[i] >= t_begin && time[i] <= t_end) {
+      first = std::min(first, i);
+      last = i;
+      ++count;
+    }
+  SG_VERIFY(count >= 2, series.path << ": window [" << t_begin << ", " << t_end << "] holds "
+                                    << count << " rows, need at least 2");
+  w.first = first;
+  w.last = last;
+  w.t_begin = time[first];
+  w.t_end = time[last];
+  return w;
+}
+
+}  // namespace sg
