@@ -1,0 +1,558 @@
+#include "geometry/packing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "core/error.h"
+#include "geometry/shapes.h"
+
+namespace sg {
+
+// ---- Grain population -----------------------------------------------------------------
+
+Polygon sample_grain_contour(const GrainShapeDef& shape, RandomEngine& engine, double& size) {
+  SG_VERIFY(shape.contour_spacing > 0.0,
+            "grain shape: contour_spacing must be positive, got " << shape.contour_spacing);
+  const Vec2 origin(0.0, 0.0);
+  switch (shape.kind) {
+    case GrainShapeKind::disc: {
+      verify_size_range(shape.diameter, "disc diameter");
+      size = sample_size(shape.diameter, engine);
+      return make_disc(origin, 0.5 * size, shape.contour_spacing);
+    }
+    case GrainShapeKind::ellipse: {
+      verify_size_range(shape.major_axis, "ellipse major axis");
+      verify_size_range(shape.minor_axis, "ellipse minor axis");
+      SG_VERIFY(shape.orientation_max >= shape.orientation_min,
+                "ellipse orientation range must satisfy min <= max, got ["
+                    << shape.orientation_min << ", " << shape.orientation_max << "]");
+      double major = sample_size(shape.major_axis, engine);
+      double minor = sample_size(shape.minor_axis, engine);
+      if (minor > major) std::swap(major, minor);
+      const double angle = uniform_in(engine, shape.orientation_min, shape.orientation_max);
+      size = major;
+      return make_ellipse(origin, 0.5 * major, 0.5 * minor, angle, shape.contour_spacing);
+    }
+    case GrainShapeKind::fourier: {
+      verify_size_range(shape.diameter, "Fourier shape diameter");
+      size = sample_size(shape.diameter, engine);
+      return sample_fourier_shape(origin, 0.5 * size, shape.spectrum, shape.contour_spacing,
+                                  engine);
+    }
+  }
+  SG_THROW("grain shape: unknown kind");
+}
+
+namespace {
+
+// Re-centres a contour on its centroid; returns the bounding radius about it.
+double center_on_centroid(Polygon& contour) {
+  const Vec2 c = centroid(contour);
+  double radius = 0.0;
+  for (Vec2& v : contour) {
+    v -= c;
+    radius = std::max(radius, v.norm());
+  }
+  return radius;
+}
+
+}  // namespace
+
+std::vector<GrainDef> generate_grains(const MixtureDef& mixture, int count, std::uint64_t seed) {
+  SG_VERIFY(!mixture.components.empty(), "grain mixture: no components");
+  SG_VERIFY(count >= 0, "grain mixture: count must be >= 0, got " << count);
+  double total_fraction = 0.0;
+  for (const GrainComponentDef& c : mixture.components) {
+    SG_VERIFY(c.number_fraction >= 0.0 && std::isfinite(c.number_fraction),
+              "grain mixture: component '" << c.name << "' has number_fraction "
+                                           << c.number_fraction << " (must be >= 0)");
+    total_fraction += c.number_fraction;
+  }
+  SG_VERIFY(total_fraction > 0.0, "grain mixture: number fractions sum to zero");
+
+  // Largest-remainder rounding: floor of each exact share, then one more grain to the
+  // components with the largest remainders (ties to the first listed).
+  const std::size_t m = mixture.components.size();
+  std::vector<int> counts(m);
+  std::vector<double> remainder(m);
+  int assigned = 0;
+  for (std::size_t c = 0; c < m; ++c) {
+    const double exact = count * mixture.components[c].number_fraction / total_fraction;
+    counts[c] = static_cast<int>(std::floor(exact));
+    remainder[c] = exact - counts[c];
+    assigned += counts[c];
+  }
+  std::vector<std::size_t> by_remainder(m);
+  std::iota(by_remainder.begin(), by_remainder.end(), std::size_t{0});
+  std::stable_sort(by_remainder.begin(), by_remainder.end(),
+                   [&](std::size_t a, std::size_t b) { return remainder[a] > remainder[b]; });
+  for (std::size_t k = 0; assigned < count; ++k, ++assigned)
+    ++counts[by_remainder[k % m]];
+
+  std::vector<int> component_of;
+  component_of.reserve(static_cast<std::size_t>(count));
+  for (std::size_t c = 0; c < m; ++c)
+    component_of.insert(component_of.end(), counts[c], int(c));
+  RandomEngine engine(seed);
+  // Fisher-Yates with the portable uniform_index (std::shuffle is implementation-defined).
+  for (int i = count - 1; i > 0; --i)
+    std::swap(component_of[static_cast<std::size_t>(i)],
+              component_of[static_cast<std::size_t>(uniform_index(engine, i + 1))]);
+
+  std::vector<GrainDef> grains(static_cast<std::size_t>(count));
+  for (std::size_t i = 0; i < grains.size(); ++i) {
+    const GrainComponentDef& c = mixture.components[static_cast<std::size_t>(component_of[i])];
+    GrainDef& g = grains[i];
+    g.contour = sample_grain_contour(c.shape, engine, g.size);
+    g.bounding_radius = center_on_centroid(g.contour);
+    g.component = component_of[i];
+    g.rigid = c.rigid;
+    g.material = c.material;
+  }
+  return grains;
+}
+
+// ---- Exact contour tests ----------------------------------------------------------------
+
+namespace {
+
+struct Box2 {
+  Vec2 lo, hi;
+};
+
+Box2 bounds(const Polygon& p, const Vec2& shift) {
+  Box2 b{p[0] + shift, p[0] + shift};
+  for (const Vec2& v : p) {
+    b.lo = b.lo.cwiseMin(v + shift);
+    b.hi = b.hi.cwiseMax(v + shift);
+  }
+  return b;
+}
+
+bool boxes_apart(const Box2& a, const Box2& b, double gap) {
+  return a.hi.x() + gap < b.lo.x() || b.hi.x() + gap < a.lo.x() || a.hi.y() + gap < b.lo.y() ||
+         b.hi.y() + gap < a.lo.y();
+}
+
+// Whether contour a and contour b translated by shift_b overlap or come closer than gap.
+bool contours_interfere(const Polygon& a, const Polygon& b, const Vec2& shift_b, double gap) {
+  const Box2 box_a = bounds(a, Vec2::Zero()), box_b = bounds(b, shift_b);
+  if (boxes_apart(box_a, box_b, gap)) return false;
+  const std::size_t na = a.size(), nb = b.size();
+  for (std::size_t i = 0; i < na; ++i) {
+    const Vec2& p = a[i];
+    const Vec2& q = a[(i + 1) % na];
+    // Skip edges of a that cannot reach b's box.
+    const Box2 edge{p.cwiseMin(q), p.cwiseMax(q)};
+    if (boxes_apart(edge, box_b, gap)) continue;
+    for (std::size_t j = 0; j < nb; ++j) {
+      const Vec2 r = b[j] + shift_b, s = b[(j + 1) % nb] + shift_b;
+      if (segments_intersect(p, q, r, s)) return true;
+      if (gap > 0.0 && (project_on_segment(r, p, q).distance < gap ||
+                        project_on_segment(p, r, s).distance < gap))
+        return true;
+    }
+  }
+  // No crossing edges: overlap only if one contour lies inside the other.
+  return contains(a, b[0] + shift_b) || contains(b, a[0] - shift_b);
+}
+
+}  // namespace
+
+bool contours_overlap(const Polygon& a, const Polygon& b) {
+  SG_VERIFY(a.size() >= 3 && b.size() >= 3, "contours_overlap needs two polygons");
+  return contours_interfere(a, b, Vec2::Zero(), 0.0);
+}
+
+// ---- Packing ------------------------------------------------------------------------------
+
+namespace {
+
+// Area of the part of polygon p with lo <= y <= hi: Sutherland-Hodgman clipping by the two
+// half-planes (exact for any simple polygon: the clip region is convex).
+double area_in_band(const Polygon& p, double lo, double hi) {
+  auto clip = [](const Polygon& in, double level, bool keep_above) {
+    Polygon out;
+    const std::size_t n = in.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec2& a = in[i];
+      const Vec2& b = in[(i + 1) % n];
+      const bool a_in = keep_above ? a.y() >= level : a.y() <= level;
+      const bool b_in = keep_above ? b.y() >= level : b.y() <= level;
+      if (a_in) out.push_back(a);
+      if (a_in != b_in) {
+        const double t = (level - a.y()) / (b.y() - a.y());
+        out.push_back(a + t * (b - a));
+      }
+    }
+    return out;
+  };
+  const Polygon below_hi = clip(p, hi, false);
+  if (below_hi.size() < 3) return 0.0;
+  const Polygon band = clip(below_hi, lo, true);
+  return band.size() < 3 ? 0.0 : signed_area(band);
+}
+
+class Packer {
+ public:
+  Packer(const std::vector<Polygon>& contours, const PackingDef& def, std::uint64_t seed)
+      : def_(def), c_(def.container), engine_(seed) {
+    const auto n = contours.size();
+    SG_VERIFY(c_.x_max > c_.x_min, "packing: container needs x_max > x_min, got ["
+                                       << c_.x_min << ", " << c_.x_max << "]");
+    SG_VERIFY(c_.kind == ContainerKind::periodic_strip || c_.y_max > c_.y_min,
+              "packing: box needs y_max > y_min, got [" << c_.y_min << ", " << c_.y_max << "]");
+    SG_VERIFY(def.min_gap >= 0.0, "packing: min_gap must be >= 0, got " << def.min_gap);
+    SG_VERIFY(def.loose_fraction > 0.0 && def.loose_fraction < 0.5,
+              "packing: loose_fraction must be in (0, 0.5), got " << def.loose_fraction);
+    SG_VERIFY(def.max_attempts_per_grain >= 1 && def.max_sweeps >= 0,
+              "packing: max_attempts_per_grain >= 1 and max_sweeps >= 0 required");
+    local_ = contours;
+    bounding_.resize(n);
+    inscribed_.resize(n);
+    area_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      Polygon& p = local_[i];
+      SG_VERIFY(p.size() >= 3 && is_counter_clockwise(p),
+                "packing: grain " << i << " is not a counter-clockwise polygon");
+      area_[i] = signed_area(p);
+      bounding_[i] = center_on_centroid(p);
+      // Radius of the largest disc about the centroid inside the contour (0 when the
+      // centroid is outside, possible for a strongly non-convex grain).
+      inscribed_[i] = contains(p, Vec2::Zero()) ? distance_to_contour(p, Vec2::Zero()) : 0.0;
+      max_bounding_ = std::max(max_bounding_, bounding_[i]);
+      mean_bounding_ += bounding_[i] / static_cast<double>(n);
+      total_area_ += area_[i];
+    }
+    width_ = c_.x_max - c_.x_min;
+    periodic_ = c_.kind == ContainerKind::periodic_strip;
+    // The minimum image convention below needs every interaction range below half a period.
+    SG_VERIFY(!periodic_ || 2.0 * max_bounding_ + def.min_gap < 0.5 * width_,
+              "packing: periodic strip of width " << width_
+                                                  << " is too narrow for grains of bounding "
+                                                     "radius "
+                                                  << max_bounding_ << " (need width > "
+                                                  << 2.0 * (2.0 * max_bounding_ + def.min_gap)
+                                                  << ")");
+    pos_.assign(n, Vec2::Zero());
+    rot_.assign(n, 0.0);
+    world_.resize(n);
+    placed_.assign(n, false);
+    cell_ = 2.0 * max_bounding_ + def.min_gap;
+    nx_ = std::max(1, static_cast<int>(std::floor(width_ / cell_)));
+    cell_width_ = width_ / nx_;
+    const double height = periodic_ ? loose_height() : c_.y_max - c_.y_min;
+    ny_ = std::max(1, static_cast<int>(std::ceil(height / cell_)));
+    cells_.assign(static_cast<std::size_t>(nx_ * ny_), {});
+    cell_of_.assign(n, -1);
+  }
+
+  PackingResult run() {
+    place_all();
+    int sweeps = 0;
+    if (def_.compact) sweeps = compact();
+    verify_no_overlap();
+    return result(sweeps);
+  }
+
+ private:
+  const PackingDef& def_;
+  const ContainerDef& c_;
+  RandomEngine engine_;
+  std::vector<Polygon> local_;
+  std::vector<double> bounding_, inscribed_, area_;
+  double max_bounding_ = 0.0, mean_bounding_ = 0.0, total_area_ = 0.0, width_ = 0.0;
+  bool periodic_ = false;
+  std::vector<Vec2> pos_;
+  std::vector<double> rot_;
+  std::vector<Polygon> world_;
+  std::vector<bool> placed_;
+  // Bucket grid of cell size >= the largest interaction range (2 R_max + gap), so that a
+  // grain's partners lie in the 3 x 3 block around its cell. Rows are clamped: grains
+  // above the last row share it, which stays correct (queries clamp the same way).
+  double cell_ = 1.0, cell_width_ = 1.0;
+  int nx_ = 1, ny_ = 1;
+  std::vector<std::vector<int>> cells_;
+  std::vector<int> cell_of_;
+
+  double loose_height() const {
+    return total_area_ / (width_ * def_.loose_fraction) + 2.0 * max_bounding_;
+  }
+
+  int column(double x) const {
+    int ix = static_cast<int>(std::floor((x - c_.x_min) / cell_width_));
+    if (periodic_) return ((ix % nx_) + nx_) % nx_;
+    return std::clamp(ix, 0, nx_ - 1);
+  }
+  int row(double y) const {
+    return std::clamp(static_cast<int>(std::floor((y - c_.y_min) / cell_)), 0, ny_ - 1);
+  }
+
+  void insert(int i) {
+    const auto k = static_cast<std::size_t>(i);
+    const int cell = row(pos_[k].y()) * nx_ + column(pos_[k].x());
+    if (cell == cell_of_[k]) return;
+    if (cell_of_[k] >= 0) {
+      auto& old = cells_[static_cast<std::size_t>(cell_of_[k])];
+      old.erase(std::find(old.begin(), old.end(), i));
+    }
+    cells_[static_cast<std::size_t>(cell)].push_back(i);
+    cell_of_[k] = cell;
+  }
+
+  Polygon transformed(int i, const Vec2& position, double angle) const {
+    const Polygon& local = local_[static_cast<std::size_t>(i)];
+    const Mat2 r = rotation(angle);
+    Polygon out(local.size());
+    for (std::size_t v = 0; v < local.size(); ++v)
+      out[v] = position + r * local[v];
+    return out;
+  }
+
+  double wrap_x(double x) const {
+    if (!periodic_) return x;
+    double w = std::fmod(x - c_.x_min, width_);
+    if (w < 0.0) w += width_;
+    if (w >= width_) w = 0.0;  // fmod of a tiny negative number rounds to width_
+    return c_.x_min + w;
+  }
+
+  // Whether grain i at (position, contour) respects the walls, the floor and the gap.
+  bool inside_container(int i, const Vec2& position, const Polygon& contour) const {
+    const double r = bounding_[static_cast<std::size_t>(i)], gap = def_.min_gap;
+    const bool x_walls = !periodic_, ceiling = !periodic_;
+    const bool clear =
+        position.y() - r >= c_.y_min + gap &&
+        (!x_walls || (position.x() - r >= c_.x_min + gap && position.x() + r <= c_.x_max - gap)) &&
+        (!ceiling || position.y() + r <= c_.y_max - gap);
+    if (clear) return true;
+    for (const Vec2& v : contour) {
+      if (v.y() < c_.y_min + gap) return false;
+      if (x_walls && (v.x() < c_.x_min + gap || v.x() > c_.x_max - gap)) return false;
+      if (ceiling && v.y() > c_.y_max - gap) return false;
+    }
+    return true;
+  }
+
+  // Translation to apply to grain j so that it is the image nearest to `position`.
+  Vec2 image_shift(const Vec2& position, int j) const {
+    if (!periodic_) return Vec2::Zero();
+    const double dx = pos_[static_cast<std::size_t>(j)].x() - position.x();
+    return Vec2(-width_ * std::round(dx / width_), 0.0);
+  }
+
+  // Whether grain i at (position, contour) is clear of every other placed grain.
+  bool clear_of_others(int i, const Vec2& position, const Polygon& contour) const {
+    const auto k = static_cast<std::size_t>(i);
+    const double reach = bounding_[k] + max_bounding_ + def_.min_gap;
+    const int ix0 = static_cast<int>(std::floor((position.x() - reach - c_.x_min) / cell_width_));
+    const int ix1 = static_cast<int>(std::floor((position.x() + reach - c_.x_min) / cell_width_));
+    const int iy0 = row(position.y() - reach), iy1 = row(position.y() + reach);
+    // Distinct columns (a narrow periodic grid may wrap onto the same column twice).
+    int columns[8];
+    int column_count = 0;
+    for (int ix = ix0; ix <= ix1 && column_count < nx_; ++ix) {
+      const int c = periodic_ ? ((ix % nx_) + nx_) % nx_ : ix;
+      if (c < 0 || c >= nx_) continue;
+      if (std::find(columns, columns + column_count, c) != columns + column_count) continue;
+      if (column_count == 8) break;
+      columns[column_count++] = c;
+    }
+    for (int iy = iy0; iy <= iy1; ++iy) {
+      for (int ci = 0; ci < column_count; ++ci) {
+        for (int j : cells_[static_cast<std::size_t>(iy * nx_ + columns[ci])]) {
+          if (j == i) continue;
+          const auto l = static_cast<std::size_t>(j);
+          const Vec2 shift = image_shift(position, j);
+          const double distance = (pos_[l] + shift - position).norm();
+          if (distance >= bounding_[k] + bounding_[l] + def_.min_gap) continue;
+          if (distance < inscribed_[k] + inscribed_[l]) return false;
+          if (contours_interfere(contour, world_[l], shift, def_.min_gap)) return false;
+        }
+      }
+    }
+    return true;
+  }
+
+  void accept(int i, const Vec2& position, double angle, Polygon&& contour) {
+    const auto k = static_cast<std::size_t>(i);
+    const Vec2 wrapped(wrap_x(position.x()), position.y());
+    if (wrapped.x() != position.x()) {
+      const Vec2 shift = wrapped - position;
+      for (Vec2& v : contour)
+        v += shift;
+    }
+    pos_[k] = wrapped;
+    rot_[k] = angle;
+    world_[k] = std::move(contour);
+    insert(i);
+  }
+
+  // Step 1: random sequential addition, largest grains first (they are the hardest to fit).
+  void place_all() {
+    const int n = static_cast<int>(local_.size());
+    std::vector<int> order(static_cast<std::size_t>(n));
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+      return bounding_[static_cast<std::size_t>(a)] > bounding_[static_cast<std::size_t>(b)];
+    });
+    double height = periodic_ ? loose_height() : c_.y_max - c_.y_min;
+    if (!periodic_) {
+      const double box_area = width_ * height;
+      SG_VERIFY(total_area_ < box_area, "packing: grains of total area "
+                                            << total_area_ << " cannot fit in a box of area "
+                                            << box_area);
+    }
+    int placed = 0;
+    double placed_area = 0.0;
+    for (int i : order) {
+      const auto k = static_cast<std::size_t>(i);
+      const double margin = inscribed_[k];
+      bool done = false;
+      for (int attempt = 0; !done; ++attempt) {
+        if (attempt == def_.max_attempts_per_grain) {
+          SG_VERIFY(periodic_, "packing: could not place grain "
+                                   << i << " (bounding radius " << bounding_[k] << ") after "
+                                   << def_.max_attempts_per_grain << " random trials; " << placed
+                                   << " of " << n << " grains placed, covering a fraction "
+                                   << placed_area / (width_ * height)
+                                   << " of the box (random sequential addition jams near 0.5 for "
+                                      "discs): enlarge the box or place fewer grains");
+          // Strip: the loose region was too tight; grow it and keep trying.
+          height *= 1.5;
+          attempt = 0;
+        }
+        const double x = periodic_ ? uniform_in(engine_, c_.x_min, c_.x_max)
+                                   : uniform_in(engine_, c_.x_min + margin, c_.x_max - margin);
+        const double y = uniform_in(engine_, c_.y_min + margin, c_.y_min + height - margin);
+        const Vec2 position(x, y);
+        Polygon contour = transformed(i, position, 0.0);
+        if (!inside_container(i, position, contour) || !clear_of_others(i, position, contour))
+          continue;
+        accept(i, position, 0.0, std::move(contour));
+        placed_[k] = true;
+        ++placed;
+        placed_area += area_[k];
+        done = true;
+      }
+    }
+  }
+
+  // Step 2: annealed Metropolis Monte Carlo under gravity (see the header).
+  int compact() {
+    const int n = static_cast<int>(local_.size());
+    if (n == 0) return 0;
+    double step = mean_bounding_;  // largest displacement per trial (length)
+    const double min_step = 1e-3 * mean_bounding_;
+    // Temperature in units of height: a rise of dy is accepted with probability exp(-dy/T).
+    // It starts at a tenth of a grain radius and decays to ~0 over 60 % of the sweeps.
+    const double t0 = 0.1 * mean_bounding_;
+    const double decay = std::pow(1e-4, 1.0 / std::max(1.0, 0.6 * def_.max_sweeps));
+    double temperature = t0;
+    std::vector<int> order(static_cast<std::size_t>(n));
+    std::iota(order.begin(), order.end(), 0);
+    int sweep = 0;
+    for (; sweep < def_.max_sweeps && step > min_step; ++sweep) {
+      // Lowest grains first: they make room for the ones above in the same sweep.
+      std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+        return pos_[static_cast<std::size_t>(a)].y() < pos_[static_cast<std::size_t>(b)].y();
+      });
+      int accepted = 0;
+      for (int i : order) {
+        const auto k = static_cast<std::size_t>(i);
+        // Draw everything first: the engine stream does not depend on which test fails.
+        const double ux = uniform01(engine_), uy = uniform01(engine_);
+        const double ut = uniform01(engine_), ua = uniform01(engine_);
+        const Vec2 move(step * (2.0 * ux - 1.0), step * (2.0 * uy - 1.0));
+        if (move.y() > 0.0 && !(temperature > 0.0 && ua < std::exp(-move.y() / temperature)))
+          continue;
+        const double turn =
+            def_.allow_rotation ? (step / bounding_[k]) * (2.0 * ut - 1.0) * 0.5 : 0.0;
+        const Vec2 position = pos_[k] + move;
+        const double angle = rot_[k] + turn;
+        Polygon contour = transformed(i, position, angle);
+        if (!inside_container(i, position, contour) || !clear_of_others(i, position, contour))
+          continue;
+        accept(i, position, angle, std::move(contour));
+        ++accepted;
+      }
+      const double ratio = static_cast<double>(accepted) / n;
+      if (ratio < 0.3) step *= 0.8;
+      if (ratio > 0.5) step = std::min(1.25 * step, 2.0 * mean_bounding_);
+      temperature *= decay;
+    }
+    return sweep;
+  }
+
+  // Step 3: every pair, images included, tested on the exact contours (gap 0: the gap is a
+  // target of the placement, overlap is a bug).
+  void verify_no_overlap() const {
+    const int n = static_cast<int>(local_.size());
+    for (int i = 0; i < n; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      SG_INTERNAL_CHECK(inside_container(i, pos_[k], world_[k]),
+                        "grain " << i << " outside the container");
+      // clear_of_others with gap 0 semantics is the exact test; run it against all
+      // neighbours (it already covers every pair within reach, images included).
+      SG_INTERNAL_CHECK(clear_of_others_exact(i),
+                        "grains overlap after packing (grain " << i << ")");
+    }
+  }
+
+  bool clear_of_others_exact(int i) const {
+    const auto k = static_cast<std::size_t>(i);
+    for (std::size_t l = 0; l < local_.size(); ++l) {
+      if (l == k) continue;
+      const Vec2 shift = image_shift(pos_[k], static_cast<int>(l));
+      if ((pos_[l] + shift - pos_[k]).norm() >= bounding_[k] + bounding_[l]) continue;
+      if (contours_interfere(world_[k], world_[l], shift, 0.0)) return false;
+    }
+    return true;
+  }
+
+  PackingResult result(int sweeps) const {
+    PackingResult r;
+    r.positions = pos_;
+    r.rotations = rot_;
+    r.contours = world_;
+    r.grain_area = total_area_;
+    r.sweeps = sweeps;
+    r.top = c_.y_min;
+    for (const Polygon& p : world_)
+      for (const Vec2& v : p)
+        r.top = std::max(r.top, v.y());
+    const double height = r.top - c_.y_min;
+    r.solid_fraction = height > 0.0 ? total_area_ / (width_ * height) : 0.0;
+    const double d = 2.0 * max_bounding_;
+    const double lo = c_.y_min + d, hi = r.top - 2.0 * d;
+    if (hi > lo) {
+      double inside = 0.0;
+      for (const Polygon& p : world_)
+        inside += area_in_band(p, lo, hi);
+      r.bulk_solid_fraction = inside / (width_ * (hi - lo));
+    } else {
+      r.bulk_solid_fraction = r.solid_fraction;
+    }
+    return r;
+  }
+};
+
+}  // namespace
+
+PackingResult pack_grains(const std::vector<Polygon>& local_contours, const PackingDef& def,
+                          std::uint64_t seed) {
+  Packer packer(local_contours, def, seed);
+  return packer.run();
+}
+
+PackingResult pack_grains(const std::vector<GrainDef>& grains, const PackingDef& def,
+                          std::uint64_t seed) {
+  std::vector<Polygon> contours;
+  contours.reserve(grains.size());
+  for (const GrainDef& g : grains)
+    contours.push_back(g.contour);
+  return pack_grains(contours, def, seed);
+}
+
+}  // namespace sg

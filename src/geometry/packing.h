@@ -1,0 +1,144 @@
+#pragma once
+// Sample generation: a grain population (shape laws, mixtures by number fraction, each
+// grain rigid or deformable) and its placement without overlap in a rectangular box or a
+// periodic strip, compacted along -y.
+//
+// Placement, in three steps (all randomness from one seeded engine, see
+// size_distribution.h, so a seed gives the same sample everywhere):
+//  1. random sequential addition (RSA): grains, largest first, at uniform random positions
+//     of a loose region, rejected while they overlap an already placed grain;
+//  2. compaction: Metropolis Monte Carlo of hard grains under gravity (moves in x, y and
+//     rotation; a move that overlaps is rejected; one that rises by dy is accepted with
+//     probability exp(-dy / T)), the temperature T annealed to zero and the step size
+//     adapted to keep about a third of moves accepted; the finite temperature at the start
+//     lets grains leave the arches that a pure descent freezes in;
+//  3. verification: every pair of contours, periodic images included, is tested exactly
+//     (edge intersections and containment), not only their bounding circles.
+// Bounding circles and inscribed circles about the centroid settle most pair tests
+// without touching the contours; the exact test runs only in the thin shell between them.
+//
+// Rejected alternative: soft-disc relaxation of the bounding circles. It is faster for
+// discs but packs elongated grains as if they were their bounding discs (an ellipse of
+// aspect 2 fills half of its circle) and leaves overlaps to be removed afterwards.
+#include <cstdint>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "geometry/fourier_shape.h"
+#include "geometry/polygon.h"
+#include "geometry/size_distribution.h"
+
+namespace sg {
+
+// ---- Grain population -----------------------------------------------------------------
+
+enum class GrainShapeKind { disc, ellipse, fourier };
+
+// One shape law. Lengths are full lengths (diameters, axis lengths), not radii.
+struct GrainShapeDef {
+  GrainShapeKind kind = GrainShapeKind::disc;
+  // disc: the diameter; fourier: twice the mean radius r_mean. Paper 001: [0.85, 1.15].
+  SizeRangeDef diameter{0.85, 1.15, SizeLaw::uniform};
+  // ellipse: long and short axis lengths, drawn independently (paper 003: 1-2 and 0.6-1.2
+  // µm); when the ranges overlap and the short draw exceeds the long one, they are swapped.
+  SizeRangeDef major_axis{1.0, 2.0, SizeLaw::uniform};
+  SizeRangeDef minor_axis{0.6, 1.2, SizeLaw::uniform};
+  // ellipse: angle of the long axis to +x (rad), uniform in [min, max).
+  double orientation_min = 0.0;
+  double orientation_max = std::numbers::pi;
+  // fourier: the descriptor spectrum (fourier_shape.h).
+  FourierSpectrumDef spectrum;
+  // Contour vertex spacing (length): the boundary node spacing of a deformable grain.
+  double contour_spacing = 0.1;
+};
+
+// One component of a mixture.
+struct GrainComponentDef {
+  std::string name = "grains";
+  GrainShapeDef shape;
+  double number_fraction = 1.0;  // relative weight; fractions are normalized over the mixture
+  bool rigid = false;            // rigid (3 DOFs) or deformable (meshfree)
+  std::string material = "default";
+};
+
+struct MixtureDef {
+  std::vector<GrainComponentDef> components;
+};
+
+// A generated grain, in its local frame (centroid at the origin).
+struct GrainDef {
+  Polygon contour;               // CCW, simple, centroid at (0, 0)
+  double bounding_radius = 0.0;  // max |vertex|
+  double size = 0.0;             // disc: diameter; ellipse: long axis; fourier: 2 r_mean
+  int component = 0;             // index in MixtureDef::components
+  bool rigid = false;
+  std::string material;
+};
+
+// One contour from a shape law (CCW, centred on the origin of its polar/parametric frame);
+// `size` receives the drawn size (see GrainDef::size).
+Polygon sample_grain_contour(const GrainShapeDef& shape, RandomEngine& engine, double& size);
+
+// `count` grains. Component counts follow the number fractions exactly up to rounding
+// (largest-remainder rounding, so they sum to `count`); the components are then shuffled
+// so that consecutive grains are not sorted by component.
+std::vector<GrainDef> generate_grains(const MixtureDef& mixture, int count, std::uint64_t seed);
+
+// ---- Placement --------------------------------------------------------------------------
+
+enum class ContainerKind {
+  box,             // [x_min, x_max] x [y_min, y_max], four walls
+  periodic_strip,  // periodic in x with period x_max - x_min, floor y_min, free top
+};
+
+struct ContainerDef {
+  ContainerKind kind = ContainerKind::box;
+  double x_min = 0.0;  // length
+  double x_max = 10.0;
+  double y_min = 0.0;   // floor
+  double y_max = 10.0;  // ceiling of the box; ignored by the strip
+};
+
+struct PackingDef {
+  ContainerDef container;
+  // Smallest clearance kept between two contours and between a contour and a wall
+  // (length). 0: contours may come arbitrarily close but never cross.
+  double min_gap = 0.0;
+  bool compact = true;         // step 2 (otherwise the RSA placement is returned)
+  bool allow_rotation = true;  // compaction may rotate grains (it perturbs the orientations)
+  // Strip only: solid fraction of the region [y_min, y_min + H] in which RSA places the
+  // grains before compaction (RSA of discs jams near 0.55, so 0.3 places quickly).
+  double loose_fraction = 0.3;
+  int max_attempts_per_grain = 20000;  // RSA draws before giving up (box) or growing H (strip)
+  int max_sweeps = 300;                // compaction sweeps (one trial move per grain each)
+};
+
+struct PackingResult {
+  // Per grain, in the input order: world = position + rotation(angle) * (local - centroid).
+  std::vector<Vec2> positions;  // centroids; strip: x wrapped into [x_min, x_max)
+  std::vector<double> rotations;
+  std::vector<Polygon> contours;  // world coordinates (strip: may cross x_max; see images)
+  double grain_area = 0.0;        // sum of the contour areas
+  double top = 0.0;               // highest contour point
+  // grain_area / ((x_max - x_min) (top - y_min)): counts the rough top layer as porosity.
+  double solid_fraction = 0.0;
+  // Solid fraction within [y_min + D, top - 2 D], D the largest bounding diameter (away
+  // from the floor's layering and the free surface); equal to solid_fraction when that
+  // band is empty.
+  double bulk_solid_fraction = 0.0;
+  int sweeps = 0;  // compaction sweeps performed
+};
+
+// Places grains given by local contours (any CCW simple polygons; they are re-centred on
+// their centroids). Throws sg::Error when they cannot fit (box) or the input is invalid.
+PackingResult pack_grains(const std::vector<Polygon>& local_contours, const PackingDef& def,
+                          std::uint64_t seed);
+PackingResult pack_grains(const std::vector<GrainDef>& grains, const PackingDef& def,
+                          std::uint64_t seed);
+
+// Whether two closed contours overlap: an edge of one crosses or touches an edge of the
+// other, or one lies inside the other.
+bool contours_overlap(const Polygon& a, const Polygon& b);
+
+}  // namespace sg
