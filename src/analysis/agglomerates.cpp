@@ -100,6 +100,46 @@ WeightedPdf weighted_pdf(std::span<const double> values, std::span<const double>
   return pdf;
 }
 
+std::vector<Structure> measure_structure_extents(const SpaceTimeLabels& labels,
+                                                 const std::vector<signed char>& sign,
+                                                 const RegularGrid& grid, double frame_period) {
+  SG_VERIFY(labels.nx == grid.nx && labels.ny == grid.ny && sign.size() == labels.label.size(),
+            "structure extents: labels " << labels.nx << " x " << labels.ny << " for grid "
+                                         << grid.nx << " x " << grid.ny);
+  const std::size_t per_frame = grid.size();
+  const int nt = labels.nt;
+  std::vector<Structure> structures(static_cast<std::size_t>(labels.count));
+  // Node counts per (structure, frame).
+  std::vector<std::vector<std::size_t>> nodes_in_frame(
+      structures.size(), std::vector<std::size_t>(static_cast<std::size_t>(nt), 0));
+  for (std::size_t k = 0; k < labels.label.size(); ++k) {
+    const int l = labels.label[k];
+    if (l < 0) continue;
+    const auto s = static_cast<std::size_t>(l);
+    ++nodes_in_frame[s][k / per_frame];
+    structures[s].sign = sign[k];
+  }
+  const double cell_area = grid.hx * grid.hy;
+  for (std::size_t s = 0; s < structures.size(); ++s) {
+    Structure& st = structures[s];
+    st.first_frame = nt;
+    st.last_frame = -1;
+    std::size_t nodes = 0;
+    for (int t = 0; t < nt; ++t) {
+      const std::size_t count = nodes_in_frame[s][static_cast<std::size_t>(t)];
+      if (count == 0) continue;
+      st.first_frame = std::min(st.first_frame, t);
+      st.last_frame = std::max(st.last_frame, t);
+      ++st.frame_count;
+      nodes += count;
+    }
+    st.lifetime = st.frame_count * frame_period;
+    st.mean_area = static_cast<double>(nodes) * cell_area / st.frame_count;
+    st.diameter = 2.0 * std::sqrt(st.mean_area / std::numbers::pi);  // paper 002 §3.4
+  }
+  return structures;
+}
+
 AgglomerateResult detect_agglomerates(std::span<const GrainSnapshot> snapshots,
                                       const RegularGrid& grid, const AgglomerateParams& params,
                                       double velocity, double gap) {
@@ -129,35 +169,7 @@ AgglomerateResult detect_agglomerates(std::span<const GrainSnapshot> snapshots,
   }
   out.labels = label_space_time(sign, grid.nx, grid.ny, nt);
 
-  // Extent in space-time: node counts per (structure, frame).
-  out.structures.assign(static_cast<std::size_t>(out.labels.count), Structure{});
-  std::vector<std::vector<std::size_t>> nodes_in_frame(
-      out.structures.size(), std::vector<std::size_t>(static_cast<std::size_t>(nt), 0));
-  for (std::size_t k = 0; k < out.labels.label.size(); ++k) {
-    const int l = out.labels.label[k];
-    if (l < 0) continue;
-    const auto s = static_cast<std::size_t>(l);
-    ++nodes_in_frame[s][k / per_frame];
-    out.structures[s].sign = sign[k];
-  }
-  const double cell_area = grid.hx * grid.hy;
-  for (std::size_t s = 0; s < out.structures.size(); ++s) {
-    Structure& st = out.structures[s];
-    st.first_frame = nt;
-    st.last_frame = -1;
-    std::size_t nodes = 0;
-    for (int t = 0; t < nt; ++t) {
-      const std::size_t count = nodes_in_frame[s][static_cast<std::size_t>(t)];
-      if (count == 0) continue;
-      st.first_frame = std::min(st.first_frame, t);
-      st.last_frame = std::max(st.last_frame, t);
-      ++st.frame_count;
-      nodes += count;
-    }
-    st.lifetime = st.frame_count * out.frame_period;
-    st.mean_area = static_cast<double>(nodes) * cell_area / st.frame_count;
-    st.diameter = 2.0 * std::sqrt(st.mean_area / std::numbers::pi);  // paper 002 §3.4
-  }
+  out.structures = measure_structure_extents(out.labels, sign, grid, out.frame_period);
 
   // Grains of each structure, frame by frame; angular velocity samples (eq. 6).
   std::vector<std::vector<double>> omega_samples(out.structures.size());

@@ -74,6 +74,12 @@ AgglomerateResult detect_agglomerates(std::span<const GrainSnapshot> snapshots,
                                       const RegularGrid& grid, const AgglomerateParams& params,
                                       double velocity, double gap);
 
+// Sign, frames, lifetime, mean area and diameter of each labelled structure (no grain
+// data: grain_samples, omega, omega_normalized left at 0).
+std::vector<Structure> measure_structure_extents(const SpaceTimeLabels& labels,
+                                                 const std::vector<signed char>& sign,
+                                                 const RegularGrid& grid, double frame_period);
+
 // Paper 002 eq. 6 for one cluster at one instant, samples appended to `samples`
 // (V_circ,i / R_i per grain; grains closer than 1e-12 x the cluster size to the
 // barycentre are skipped, their direction being undefined). Returns the mean of the
