@@ -439,48 +439,54 @@ class Packer {
     }
   }
 
-  // Step 2: annealed Metropolis Monte Carlo under gravity (see the header).
+  // Step 2: annealed Metropolis Monte Carlo under gravity (see the header). Each grain has
+  // its own step size, grown after an accepted move and shrunk after a move that overlaps
+  // (not after a Metropolis refusal of a rise): a free grain keeps large steps while a
+  // caged one probes its cage finely.
   int compact() {
     const int n = static_cast<int>(local_.size());
     if (n == 0) return 0;
-    double step = mean_bounding_;  // largest displacement per trial (length)
+    const double max_step = mean_bounding_;
     const double min_step = 1e-3 * mean_bounding_;
+    std::vector<double> step(static_cast<std::size_t>(n), 0.5 * mean_bounding_);
     // Temperature in units of height: a rise of dy is accepted with probability exp(-dy/T).
-    // It starts at a tenth of a grain radius and decays to ~0 over 60 % of the sweeps.
-    const double t0 = 0.1 * mean_bounding_;
+    // It starts at 0.3 grain radius (tried 0.1, 0.3, 0.5 on 200 discs: 0.3 packed densest) and
+    // decays to ~0 over 60 % of the sweeps.
+    const double t0 = 0.3 * mean_bounding_;
     const double decay = std::pow(1e-4, 1.0 / std::max(1.0, 0.6 * def_.max_sweeps));
     double temperature = t0;
     std::vector<int> order(static_cast<std::size_t>(n));
     std::iota(order.begin(), order.end(), 0);
     int sweep = 0;
-    for (; sweep < def_.max_sweeps && step > min_step; ++sweep) {
+    for (; sweep < def_.max_sweeps; ++sweep) {
       // Lowest grains first: they make room for the ones above in the same sweep.
       std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
         return pos_[static_cast<std::size_t>(a)].y() < pos_[static_cast<std::size_t>(b)].y();
       });
-      int accepted = 0;
+      double largest_step = 0.0;
       for (int i : order) {
         const auto k = static_cast<std::size_t>(i);
         // Draw everything first: the engine stream does not depend on which test fails.
         const double ux = uniform01(engine_), uy = uniform01(engine_);
         const double ut = uniform01(engine_), ua = uniform01(engine_);
-        const Vec2 move(step * (2.0 * ux - 1.0), step * (2.0 * uy - 1.0));
+        const Vec2 move(step[k] * (2.0 * ux - 1.0), step[k] * (2.0 * uy - 1.0));
+        largest_step = std::max(largest_step, step[k]);
         if (move.y() > 0.0 && !(temperature > 0.0 && ua < std::exp(-move.y() / temperature)))
           continue;
         const double turn =
-            def_.allow_rotation ? (step / bounding_[k]) * (2.0 * ut - 1.0) * 0.5 : 0.0;
+            def_.allow_rotation ? (step[k] / bounding_[k]) * (2.0 * ut - 1.0) * 0.5 : 0.0;
         const Vec2 position = pos_[k] + move;
         const double angle = rot_[k] + turn;
         Polygon contour = transformed(i, position, angle);
-        if (!inside_container(i, position, contour) || !clear_of_others(i, position, contour))
+        if (!inside_container(i, position, contour) || !clear_of_others(i, position, contour)) {
+          step[k] = std::max(0.9 * step[k], min_step);
           continue;
+        }
         accept(i, position, angle, std::move(contour));
-        ++accepted;
+        step[k] = std::min(1.1 * step[k], max_step);
       }
-      const double ratio = static_cast<double>(accepted) / n;
-      if (ratio < 0.3) step *= 0.8;
-      if (ratio > 0.5) step = std::min(1.25 * step, 2.0 * mean_bounding_);
       temperature *= decay;
+      if (largest_step <= min_step) break;  // every grain caged to within min_step
     }
     return sweep;
   }
