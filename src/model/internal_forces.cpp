@@ -1,5 +1,6 @@
 #include "model/internal_forces.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -9,7 +10,8 @@ namespace sg {
 
 BodyForceResult add_body_internal_forces(const Model& model, BodyId body_id, const double* ux,
                                          const double* uy, const double* vx, const double* vy,
-                                         double* fx, double* fy, bool with_damping) {
+                                         double* fx, double* fy, bool with_damping,
+                                         double* viscous_fx, double* viscous_fy) {
   const Body& body = model.bodies[static_cast<std::size_t>(body_id)];
   const MaterialParams& material = model.materials[static_cast<std::size_t>(body.material)];
   const bool damped = with_damping && material.damping > 0.0;
@@ -20,6 +22,9 @@ BodyForceResult add_body_internal_forces(const Model& model, BodyId body_id, con
   const double* dndy = rows.dndy.data();
 
   BodyForceResult result;
+  const bool split_viscous = damped && viscous_fx != nullptr;
+  if (viscous_fx) std::fill(viscous_fx, viscous_fx + body.node_count(), 0.0);
+  if (viscous_fy) std::fill(viscous_fy, viscous_fy + body.node_count(), 0.0);
   for (int g = body.gauss_begin; g < body.gauss_end; ++g) {
     const auto begin = offset[g], end = offset[g + 1];
     // Displacement gradient H = F - I and its rate.
@@ -58,8 +63,18 @@ BodyForceResult add_body_internal_forces(const Model& model, BodyId body_id, con
       const Mat2 ft_fdot = f.transpose() * f_rate;
       const Mat2 strain_rate = 0.5 * (ft_fdot + ft_fdot.transpose());
       const Mat2 s_viscous = viscous_second_piola(material, strain_rate);
-      p += f * s_viscous;
+      const Mat2 p_viscous = f * s_viscous;
+      p += p_viscous;
       result.damping_power += w * (s_viscous.array() * strain_rate.array()).sum();
+      if (split_viscous) {
+        const double q00 = w * p_viscous(0, 0), q01 = w * p_viscous(0, 1);
+        const double q10 = w * p_viscous(1, 0), q11 = w * p_viscous(1, 1);
+        for (auto k = begin; k < end; ++k) {
+          const auto j = node[k];
+          viscous_fx[j] -= q00 * dndx[k] + q01 * dndy[k];
+          viscous_fy[j] -= q10 * dndx[k] + q11 * dndy[k];
+        }
+      }
     }
     // f_J -= w P grad0 N_J
     const double p00 = w * p(0, 0), p01 = w * p(0, 1), p10 = w * p(1, 0), p11 = w * p(1, 1);
@@ -83,7 +98,8 @@ InternalForceResult add_internal_forces(Model& model) {
     const auto o = static_cast<std::size_t>(body.node_begin);
     per_body[static_cast<std::size_t>(b)] =
         add_body_internal_forces(model, b, n.ux.data() + o, n.uy.data() + o, n.vx.data() + o,
-                                 n.vy.data() + o, n.fx.data() + o, n.fy.data() + o);
+                                 n.vy.data() + o, n.fx.data() + o, n.fy.data() + o, true,
+                                 n.viscous_fx.data() + o, n.viscous_fy.data() + o);
   }
   InternalForceResult total;
   for (int b = 0; b < body_count; ++b) {

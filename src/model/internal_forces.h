@@ -20,9 +20,12 @@ struct BodyForceResult {
 
 // Adds the internal forces of `body` into fx, fy. Arrays point at the body's first node
 // (local numbering of the rows). With `with_damping` false the viscous stress is skipped.
+// When `viscous_fx`/`viscous_fy` are given, they receive (are set to) the viscous part alone.
 BodyForceResult add_body_internal_forces(const Model& model, BodyId body, const double* ux,
                                          const double* uy, const double* vx, const double* vy,
-                                         double* fx, double* fy, bool with_damping = true);
+                                         double* fx, double* fy, bool with_damping = true,
+                                         double* viscous_fx = nullptr,
+                                         double* viscous_fy = nullptr);
 
 struct InternalForceResult {
   double elastic_energy = 0.0;

@@ -23,10 +23,21 @@ Vec2 reference_mass_centroid(const Model& model, BodyId body) {
 
 void set_rigid_velocity(Model& model, BodyId body, const Vec2& velocity, double angular_velocity) {
   const Body& b = model.bodies[static_cast<std::size_t>(body)];
-  const Vec2 c = reference_mass_centroid(model, body);
+  // About the current (parameter) positions X + u: the field v + omega x (x - c) is linear
+  // in the current position, hence reproduced exactly by MLS, whatever the deformation.
+  double m = 0.0;
+  Vec2 c(0, 0);
   for (int i = b.node_begin; i < b.node_end; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    const Vec2 r = Vec2(model.nodes.ref_x[k], model.nodes.ref_y[k]) - c;
+    m += model.nodes.mass[k];
+    c += model.nodes.mass[k] * Vec2(model.nodes.ref_x[k] + model.nodes.ux[k],
+                                    model.nodes.ref_y[k] + model.nodes.uy[k]);
+  }
+  c /= m;
+  for (int i = b.node_begin; i < b.node_end; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    const Vec2 r = Vec2(model.nodes.ref_x[k] + model.nodes.ux[k],
+                        model.nodes.ref_y[k] + model.nodes.uy[k]) - c;
     model.nodes.vx[k] = velocity.x() - angular_velocity * r.y();
     model.nodes.vy[k] = velocity.y() + angular_velocity * r.x();
   }
@@ -108,6 +119,27 @@ Vec2 gauss_reference_position(const Model& model, BodyId body, int g) {
     x += model.gauss_rows.value[k] * Vec2(model.nodes.ref_x[j], model.nodes.ref_y[j]);
   });
   return x;
+}
+
+void compute_contour_positions(const Model& model, std::vector<Vec2>& positions) {
+  positions.resize(model.contour_point_count());
+  const int count = static_cast<int>(model.bodies.size());
+#pragma omp parallel for schedule(dynamic, 16)
+  for (int b = 0; b < count; ++b) {
+    const Body& body = model.bodies[static_cast<std::size_t>(b)];
+    if (body.kind == BodyKind::rigid) {
+      const auto r = static_cast<std::size_t>(body.rigid_index);
+      const Mat2 rot = rotation(model.rigid.theta[r]);
+      const Vec2 c(model.rigid.x[r], model.rigid.y[r]);
+      for (int k = body.contour_begin; k < body.contour_end; ++k)
+        positions[static_cast<std::size_t>(k)] =
+            c + rot * model.rigid_contour_offset[static_cast<std::size_t>(k)];
+    } else {
+      for (int k = body.contour_begin; k < body.contour_end; ++k)
+        positions[static_cast<std::size_t>(k)] =
+            node_position(model, body.node_begin + (k - body.contour_begin));
+    }
+  }
 }
 
 double total_mass(const Model& model) {

@@ -6,8 +6,8 @@
 
 namespace sg {
 
-// Sets the velocity parameters of `body` to the rigid field v + omega x (X - c), c the
-// reference centroid of the nodes' mass. Exact everywhere in the body.
+// Sets the velocity parameters of `body` to the rigid field v + omega x (x - c), x the current
+// position and c the current centre of mass. Exact everywhere in the body.
 void set_rigid_velocity(Model& model, BodyId body, const Vec2& velocity, double angular_velocity);
 
 // Sets the displacement parameters so that the deformation is x = c + F (X - c) (c the mass
@@ -27,6 +27,10 @@ Mat2 node_deformation_gradient(const Model& model, int node);
 Mat2 gauss_deformation_gradient(const Model& model, BodyId body, int g);
 // Reference position of Gauss point g: sum_J N_J(x_g) X_J (exact by linear reproduction).
 Vec2 gauss_reference_position(const Model& model, BodyId body, int g);
+
+// Current positions of all contour points (Model::contour_body order): boundary-node
+// positions of deformable bodies, rigidly moved points of rigid bodies. Parallel over bodies.
+void compute_contour_positions(const Model& model, std::vector<Vec2>& positions);
 
 // Totals over all nodes (parameters carry the lumped masses).
 double total_mass(const Model& model);

@@ -1,11 +1,14 @@
 #include "model/model.h"
 
+#include <algorithm>
+
 #include "core/error.h"
 
 namespace sg {
 
 void NodeState::resize(std::size_t n) {
-  for (auto* a : {&ref_x, &ref_y, &ux, &uy, &vx, &vy, &fx, &fy, &mass, &inverse_mass})
+  for (auto* a : {&ref_x, &ref_y, &ux, &uy, &vx, &vy, &fx, &fy, &viscous_fx, &viscous_fy, &mass,
+                  &inverse_mass})
     a->resize(n, 0.0);
 }
 
@@ -39,6 +42,12 @@ BodyId Model::add_deformable_body(const std::string& name, const BodyDiscretizat
   body.triangle_begin = static_cast<int>(triangles.size());
   body.triangle_end = body.triangle_begin + static_cast<int>(d.mesh.triangles.size());
   for (double w : d.gauss_weight) body.reference_area += w;
+  body.contour_begin = static_cast<int>(contour_body.size());
+  body.contour_end = body.contour_begin + d.mesh.boundary_count;
+  contour_body.insert(contour_body.end(), static_cast<std::size_t>(d.mesh.boundary_count),
+                      static_cast<BodyId>(bodies.size()));
+  rigid_contour_offset.insert(rigid_contour_offset.end(),
+                              static_cast<std::size_t>(d.mesh.boundary_count), Vec2::Zero());
 
   const double density = materials[static_cast<std::size_t>(material)].density;
   nodes.resize(static_cast<std::size_t>(body.node_end));
@@ -56,6 +65,59 @@ BodyId Model::add_deformable_body(const std::string& name, const BodyDiscretizat
     triangles.push_back({t[0] + body.node_begin, t[1] + body.node_begin, t[2] + body.node_begin});
   bodies.push_back(body);
   return static_cast<BodyId>(bodies.size() - 1);
+}
+
+BodyId Model::add_rigid_body(const std::string& name, const Polygon& contour, MaterialId material,
+                             bool open_contour) {
+  SG_VERIFY(material >= 0 && static_cast<std::size_t>(material) < materials.size(),
+            "body '" << name << "': unknown material index " << material);
+  for (const Body& b : bodies) SG_VERIFY(b.name != name, "body name '" << name << "' is used twice");
+  SG_VERIFY(contour.size() >= (open_contour ? 2u : 3u),
+            "body '" << name << "': a contour needs at least 3 points, got " << contour.size());
+  const double area = signed_area(contour);
+  SG_VERIFY(!is_self_intersecting(contour) || open_contour,
+            "body '" << name << "': contour is self-intersecting");
+  SG_VERIFY(area > 0.0, "body '" << name << "': contour must be counter-clockwise (signed area "
+                                 << area << ")");
+  const double density = materials[static_cast<std::size_t>(material)].density;
+  const Vec2 c = centroid(contour);
+  Body body;
+  body.name = name;
+  body.kind = BodyKind::rigid;
+  body.material = material;
+  body.node_begin = body.node_end = body.boundary_end = static_cast<int>(nodes.size());
+  body.gauss_begin = body.gauss_end = static_cast<int>(gauss_weight.size());
+  body.triangle_begin = body.triangle_end = static_cast<int>(triangles.size());
+  body.contour_begin = static_cast<int>(contour_body.size());
+  body.contour_end = body.contour_begin + static_cast<int>(contour.size());
+  body.open_contour = open_contour;
+  body.reference_area = area;
+  body.rigid_index = static_cast<int>(rigid.size());
+  for (const Vec2& p : contour) {
+    rigid_contour_offset.push_back(p - c);
+    contour_body.push_back(static_cast<BodyId>(bodies.size()));
+  }
+  for (auto* a : {&rigid.x, &rigid.y, &rigid.theta, &rigid.vx, &rigid.vy, &rigid.omega, &rigid.fx,
+                  &rigid.fy, &rigid.torque, &rigid.mass, &rigid.inertia})
+    a->push_back(0.0);
+  const std::size_t r = rigid.size() - 1;
+  rigid.x[r] = c.x();
+  rigid.y[r] = c.y();
+  rigid.mass[r] = density * area;
+  rigid.inertia[r] = density * polar_second_moment(contour);
+  rigid.drive.emplace_back();
+  bodies.push_back(body);
+  return static_cast<BodyId>(bodies.size() - 1);
+}
+
+double PiecewiseLinear::operator()(double t) const {
+  if (values.empty()) return 0.0;
+  if (t <= times.front()) return values.front();
+  if (t >= times.back()) return values.back();
+  const auto it = std::upper_bound(times.begin(), times.end(), t);
+  const std::size_t i = static_cast<std::size_t>(it - times.begin());
+  const double s = (t - times[i - 1]) / (times[i] - times[i - 1]);
+  return values[i - 1] + s * (values[i] - values[i - 1]);
 }
 
 }  // namespace sg

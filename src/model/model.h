@@ -32,14 +32,54 @@ struct Body {
   std::string name;
   BodyKind kind = BodyKind::deformable;
   MaterialId material = 0;
-  int node_begin = 0, node_end = 0;  // global node range
+  int node_begin = 0, node_end = 0;  // global node range (deformable; empty for rigid)
   int boundary_end = 0;              // [node_begin, boundary_end): contour nodes, CCW
   int gauss_begin = 0, gauss_end = 0;
   int triangle_begin = 0, triangle_end = 0;
+  // Contour points of every body, concatenated (Model::contour_*): for a deformable body,
+  // contour point k is boundary node node_begin + (k - contour_begin); for a rigid body the
+  // points follow the rigid motion.
+  int contour_begin = 0, contour_end = 0;
+  // Open contour: a strip spanning the periodic cell in x (first body), whose last point
+  // connects to its first point shifted by one period. Closed otherwise.
+  bool open_contour = false;
+  int rigid_index = -1;  // index into Model::rigid (rigid bodies)
   double reference_area = 0.0;
 
   int node_count() const { return node_end - node_begin; }
   int boundary_count() const { return boundary_end - node_begin; }
+  int contour_count() const { return contour_end - contour_begin; }
+};
+
+// How one degree of freedom (x, y or theta) of a rigid body is driven.
+enum class DriveMode : std::uint8_t {
+  free,      // integrated from the forces it receives
+  velocity,  // velocity imposed (piecewise-linear history); the reaction force is measured
+  force,     // a constant imposed force (or torque) added to the contact forces
+};
+
+// A piecewise-linear function of time, constant beyond its ends (imposed velocities).
+struct PiecewiseLinear {
+  std::vector<double> times;   // strictly increasing
+  std::vector<double> values;
+  double operator()(double t) const;
+  static PiecewiseLinear constant(double value) { return {{0.0}, {value}}; }
+};
+
+struct RigidDrive {
+  DriveMode mode[3] = {DriveMode::free, DriveMode::free, DriveMode::free};  // x, y, theta
+  PiecewiseLinear velocity[3];   // used when mode == velocity (length/time, rad/time)
+  double force[3] = {0, 0, 0};   // used when mode == force (force, force, torque)
+};
+
+// Rigid bodies: a few scalars each (structure of arrays, one entry per rigid body).
+struct RigidState {
+  std::vector<double> x, y, theta;          // centre of mass and orientation (checkpointed)
+  std::vector<double> vx, vy, omega;        // velocities (checkpointed)
+  std::vector<double> fx, fy, torque;       // forces received this step (contacts, gravity)
+  std::vector<double> mass, inertia;        // from contour and density
+  std::vector<RigidDrive> drive;
+  std::size_t size() const { return x.size(); }
 };
 
 // Hot per-node arrays (structure of arrays). u and v are the MLS *parameters*: the physical
@@ -49,6 +89,7 @@ struct NodeState {
   std::vector<double> ux, uy;        // displacement parameters (checkpointed)
   std::vector<double> vx, vy;        // velocity parameters (checkpointed)
   std::vector<double> fx, fy;        // total force on each parameter (recomputed each step)
+  std::vector<double> viscous_fx, viscous_fy;  // its bulk-damping part (energy bookkeeping)
   std::vector<double> mass;          // lumped mass rho * integral of N_I
   std::vector<double> inverse_mass;
 
@@ -65,7 +106,15 @@ struct Model {
   std::vector<double> gauss_weight;   // reference area of each Gauss point
   ShapeRows node_rows;                // row of each node at its own reference position
   std::vector<std::array<int, 3>> triangles;  // global node numbering
+  // Contour points of all bodies (see Body::contour_begin). For rigid bodies: the offset of
+  // each point from the centre of mass in the body frame (zero for deformable bodies).
+  std::vector<Vec2> rigid_contour_offset;
+  std::vector<BodyId> contour_body;   // owner of each contour point
+  RigidState rigid;
   Vec2 gravity = Vec2::Zero();        // acceleration (length / time^2)
+  // Periodic boundary in x over [x_min, x_max) when periodic_x is set.
+  bool periodic_x = false;
+  double x_min = 0.0, x_max = 0.0;
 
   MaterialId add_material(const MaterialDef& def);
   // Discretizes `contour` (CCW, simple; sampled at about the node spacing) and appends the
@@ -76,7 +125,14 @@ struct Model {
   BodyId add_deformable_body(const std::string& name, const BodyDiscretization& d,
                              MaterialId material);
 
+  // A rigid body with the given contour (CCW, simple; closed, or open for a periodic strip
+  // whose ends meet across the seam: then the area, centroid and inertia are those of the
+  // region between the contour and its closing). Mass and inertia from density.
+  BodyId add_rigid_body(const std::string& name, const Polygon& contour, MaterialId material,
+                        bool open_contour = false);
+
   std::size_t node_count() const { return nodes.size(); }
+  std::size_t contour_point_count() const { return contour_body.size(); }
   std::size_t gauss_point_count() const { return gauss_weight.size(); }
 };
 

@@ -64,7 +64,7 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
   if (auto t = root.table("time")) {
     t->reject_unknown_keys({"duration", "safety", "fixed_step"});
     s.duration = t->positive("duration");
-    s.time_step_safety = t->positive("safety", 0.9);
+    s.time_step_safety = t->positive("safety", 0.8);
     if (s.time_step_safety > 1.0) t->fail("safety", "expected a number in (0, 1]");
     s.fixed_time_step = t->non_negative("fixed_step", 0.0);
   } else {
@@ -84,9 +84,9 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
     s.discretization.mesh.spacing = t->positive("node_spacing", 0.1);
     s.discretization.mesh.smoothing_iterations =
         static_cast<int>(t->integer("smoothing_iterations", 10));
-    s.discretization.mls.neighbours = static_cast<int>(t->integer("mls_neighbours", 10));
+    s.discretization.mls.neighbours = static_cast<int>(t->integer("mls_neighbours", 8));
     if (s.discretization.mls.neighbours < 3) t->fail("mls_neighbours", "expected an integer >= 3");
-    s.discretization.mls.support_factor = t->number("mls_support_factor", 1.3);
+    s.discretization.mls.support_factor = t->number("mls_support_factor", 1.0);
     if (s.discretization.mls.support_factor < 1.0)
       t->fail("mls_support_factor", "expected a number >= 1");
     s.discretization.gauss_points = static_cast<int>(t->integer("gauss_points", 3));

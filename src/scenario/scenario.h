@@ -32,7 +32,7 @@ struct ScenarioDef {
   std::string name;              // run name: outputs go to <output_root>/<name>/
   // [time]
   double duration = 1.0;           // simulated time
-  double time_step_safety = 0.9;   // fraction of the estimated critical step
+  double time_step_safety = 0.8;   // fraction of the estimated critical step
   double fixed_time_step = 0.0;    // > 0: use this step instead of the estimate
   // [output]
   std::filesystem::path output_root = "out";

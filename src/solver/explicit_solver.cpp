@@ -8,7 +8,7 @@
 namespace sg {
 
 double EnergyLedger::residual() const {
-  return external_work - (kinetic - initial_kinetic) - (elastic - initial_elastic) -
+  return external_work - (kinetic - initial_kinetic) - (elastic + contact_elastic - initial_elastic) -
          damping_dissipated - contact_dissipated;
 }
 
@@ -23,6 +23,13 @@ void ExplicitSolver::step(double dt) {
     n.fx[i] = n.mass[i] * gx;
     n.fy[i] = n.mass[i] * gy;
   }
+  RigidState& rigid = model_.rigid;
+  std::fill(rigid.fx.begin(), rigid.fx.end(), 0.0);
+  std::fill(rigid.fy.begin(), rigid.fy.end(), 0.0);
+  std::fill(rigid.torque.begin(), rigid.torque.end(), 0.0);
+  ContactStepResult contact;
+  if (contacts_) contact = contacts_->add_contact_forces(model_);
+
   InternalForceResult internal;
   try {
     internal = add_internal_forces(model_);
@@ -31,6 +38,7 @@ void ExplicitSolver::step(double dt) {
   }
 
   double kinetic = 0.0, external_power = 0.0;
+  double viscous_work_new = 0.0;  // sum of f_v,n . v_n+1/2
   double finite_probe = 0.0;  // becomes NaN iff some updated value is not finite (0 * inf = NaN)
   for (std::size_t i = 0; i < count; ++i) {
     const double vx_old = n.vx[i], vy_old = n.vy[i];
@@ -39,28 +47,105 @@ void ExplicitSolver::step(double dt) {
     n.ux[i] += dt * n.vx[i];
     n.uy[i] += dt * n.vy[i];
     kinetic += 0.5 * n.mass[i] * (vx_old * n.vx[i] + vy_old * n.vy[i]);
+    viscous_work_new += n.viscous_fx[i] * n.vx[i] + n.viscous_fy[i] * n.vy[i];
     external_power += n.mass[i] * (gx * n.vx[i] + gy * n.vy[i]);
     finite_probe += 0.0 * (n.ux[i] + n.uy[i] + n.vx[i] + n.vy[i]);
   }
 
   // The ledger describes the configuration u_n: work and dissipation up to t_n (the increments
   // of the previous step), kinetic and elastic energy at t_n.
+  const auto [rigid_kinetic, rigid_power] = advance_rigid_bodies(dt);
+  kinetic += rigid_kinetic;
+  external_power += rigid_power;
+
+  // Bulk damping, booked so that the ledger closes exactly for a linear system under this
+  // scheme: the modified energy 1/2 v_n-1/2 M v_n+1/2 + E(u_n) changes over a step by
+  // 1/2 dt v_n+1/2 . (f_v,n + f_v,n+1). The half pairing f_v,n with v_n-1/2 (the power at
+  // the force evaluation) completes the previous increment; the half pairing it with
+  // v_n+1/2 starts the next one.
   EnergyLedger& e = state_.energy;
   e.external_work += pending_external_work_;
   e.damping_dissipated += pending_damping_dissipation_;
+  if (state_.step > 0) e.damping_dissipated += 0.5 * dt * internal.damping_power;
+  // Contact dissipation of this evaluation belongs to the increment that led to u_n.
+  e.contact_dissipated += contact.dissipated;
+  e.contact_elastic = contact.stored_energy;
   e.kinetic = kinetic;
   e.elastic = internal.elastic_energy;
   if (state_.step == 0) {
     e.initial_kinetic = kinetic;
-    e.initial_elastic = internal.elastic_energy;
+    e.initial_elastic = internal.elastic_energy + contact.stored_energy;
   }
   // Increments over [t_n, t_n+1]: the work of f_ext along u_n+1 - u_n = dt v_n+1/2 is exact.
   pending_external_work_ = dt * external_power;
-  pending_damping_dissipation_ = dt * internal.damping_power;
+  pending_damping_dissipation_ = -0.5 * dt * viscous_work_new;
 
   state_.time += dt;
   ++state_.step;
+  if (model_.periodic_x) wrap_periodic_bodies();
   if (finite_probe != 0.0 || !std::isfinite(finite_probe)) check_finite_velocities();
+}
+
+std::pair<double, double> ExplicitSolver::advance_rigid_bodies(double dt) {
+  RigidState& r = model_.rigid;
+  double kinetic = 0.0, power = 0.0;
+  const double t_mid = state_.time + 0.5 * dt;  // velocities live at half steps
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const RigidDrive& drive = r.drive[i];
+    double* velocity[3] = {&r.vx[i], &r.vy[i], &r.omega[i]};
+    double* position[3] = {&r.x[i], &r.y[i], &r.theta[i]};
+    const double received[3] = {r.fx[i], r.fy[i], r.torque[i]};
+    const double inertia[3] = {r.mass[i], r.mass[i], r.inertia[i]};
+    const double gravity[3] = {r.mass[i] * model_.gravity.x(), r.mass[i] * model_.gravity.y(), 0.0};
+    for (int d = 0; d < 3; ++d) {
+      const double v_old = *velocity[d];
+      double external = gravity[d];  // forces from outside the granular system
+      switch (drive.mode[d]) {
+        case DriveMode::free:
+          break;
+        case DriveMode::force:
+          external += drive.force[d];
+          break;
+        case DriveMode::velocity: {
+          // The driver supplies whatever force keeps the imposed velocity:
+          // m (v_new - v_old) / dt = received + external  =>  external = m dv/dt - received.
+          const double v_new = drive.velocity[d](t_mid);
+          external = inertia[d] * (v_new - v_old) / dt - received[d];
+          break;
+        }
+      }
+      *velocity[d] = v_old + dt * (received[d] + external) / inertia[d];
+      if (drive.mode[d] == DriveMode::velocity) *velocity[d] = drive.velocity[d](t_mid);
+      *position[d] += dt * *velocity[d];
+      kinetic += 0.5 * inertia[d] * v_old * *velocity[d];
+      power += external * *velocity[d];
+    }
+  }
+  return {kinetic, power};
+}
+
+void ExplicitSolver::wrap_periodic_bodies() {
+  const double period = model_.x_max - model_.x_min;
+  NodeState& n = model_.nodes;
+  for (const Body& body : model_.bodies) {
+    if (body.open_contour) continue;  // strips span the cell
+    double shift = 0.0;
+    if (body.kind == BodyKind::rigid) {
+      double& x = model_.rigid.x[static_cast<std::size_t>(body.rigid_index)];
+      if (x < model_.x_min) shift = period;
+      else if (x >= model_.x_max) shift = -period;
+      x += shift;
+      continue;
+    }
+    // A deformable body is moved by one period through its reference positions: u, v and
+    // every precomputed row are invariant under a translation of the reference frame.
+    const auto first = static_cast<std::size_t>(body.node_begin);
+    const double x = n.ref_x[first] + n.ux[first];
+    if (x < model_.x_min) shift = period;
+    else if (x >= model_.x_max) shift = -period;
+    if (shift != 0.0)
+      for (int i = body.node_begin; i < body.node_end; ++i) n.ref_x[static_cast<std::size_t>(i)] += shift;
+  }
 }
 
 void ExplicitSolver::check_finite_velocities() const {

@@ -12,6 +12,7 @@
 // the physics and not the O(dt) staggering of the update.
 #include <string>
 
+#include "contact/contact_system.h"
 #include "model/model.h"
 
 namespace sg {
@@ -23,8 +24,9 @@ struct EnergyLedger {
   double external_work = 0.0;       // work of external forces (gravity, loads) so far
   double damping_dissipated = 0.0;  // energy dissipated by bulk damping so far
   double contact_dissipated = 0.0;  // energy dissipated at contacts so far
+  double contact_elastic = 0.0;     // elastic energy held by contact springs now
   // Energy balance residual: W_ext - (K - K0) - (E - E0) - D_bulk - D_contact, with K0, E0
-  // the values at the first force evaluation.
+  // the values at the first force evaluation (E includes the contact springs).
   double initial_kinetic = 0.0, initial_elastic = 0.0;
   double residual() const;
 };
@@ -37,7 +39,9 @@ struct SolverState {
 
 class ExplicitSolver {
  public:
-  explicit ExplicitSolver(Model& model) : model_(model) {}
+  // `contacts` may be null (free grains).
+  explicit ExplicitSolver(Model& model, ContactSystem* contacts = nullptr)
+      : model_(model), contacts_(contacts) {}
 
   // Advances one step of size dt. Throws sg::Error with the body, node and step when the
   // state becomes invalid (inverted Gauss point, non-finite velocity).
@@ -49,12 +53,16 @@ class ExplicitSolver {
 
  private:
   Model& model_;
+  ContactSystem* contacts_;
   SolverState state_;
   // Work and dissipation over the last step [t_n, t_n+1], booked at the next step so the
   // ledger always describes one instant.
   double pending_external_work_ = 0.0;
   double pending_damping_dissipation_ = 0.0;
   void check_finite_velocities() const;
+  // Advances rigid bodies; returns (kinetic energy time-centred, external power).
+  std::pair<double, double> advance_rigid_bodies(double dt);
+  void wrap_periodic_bodies();
 };
 
 }  // namespace sg

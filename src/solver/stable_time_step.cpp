@@ -85,7 +85,44 @@ double wave_speed_frequency_bound(const Model& model, BodyId body_id) {
   return 2.0 * p_wave_speed(model.materials[static_cast<std::size_t>(body.material)]) / h_min;
 }
 
-StableStep estimate_stable_time_step(const Model& model, double safety) {
+namespace {
+
+// Highest contact frequency of a body's contour nodes (see the header).
+double contact_frequency(const Model& model, const Body& body, double k) {
+  if (k <= 0.0) return 0.0;
+  const NodeState& n = model.nodes;
+  if (body.kind == BodyKind::rigid) {
+    const auto r = static_cast<std::size_t>(body.rigid_index);
+    double length = 0.0;
+    const int count = body.contour_count();
+    for (int i = 0; i + 1 < count || (!body.open_contour && i < count); ++i) {
+      const Vec2 a = model.rigid_contour_offset[static_cast<std::size_t>(body.contour_begin + i)];
+      const Vec2 b = model.rigid_contour_offset[static_cast<std::size_t>(body.contour_begin + (i + 1) % count)];
+      length += (b - a).norm();
+    }
+    const double radius2 = model.rigid.inertia[r] / model.rigid.mass[r];
+    double max_arm2 = 0.0;
+    for (int i = 0; i < count; ++i)
+      max_arm2 = std::max(max_arm2, model.rigid_contour_offset[static_cast<std::size_t>(body.contour_begin + i)].squaredNorm());
+    // translation and rotation: k_eff / m and k_eff r_max^2 / I
+    return std::sqrt(2.0 * k * length / model.rigid.mass[r] * std::max(1.0, max_arm2 / radius2));
+  }
+  double omega2 = 0.0;
+  const int count = body.boundary_count();
+  for (int i = 0; i < count; ++i) {
+    const auto a = static_cast<std::size_t>(body.node_begin + i);
+    const auto prev = static_cast<std::size_t>(body.node_begin + (i + count - 1) % count);
+    const auto next = static_cast<std::size_t>(body.node_begin + (i + 1) % count);
+    const double l = 0.5 * (std::hypot(n.ref_x[next] - n.ref_x[a], n.ref_y[next] - n.ref_y[a]) +
+                            std::hypot(n.ref_x[prev] - n.ref_x[a], n.ref_y[prev] - n.ref_y[a]));
+    omega2 = std::max(omega2, 2.0 * k * l * n.inverse_mass[a]);
+  }
+  return std::sqrt(omega2);
+}
+
+}  // namespace
+
+StableStep estimate_stable_time_step(const Model& model, double safety, double contact_stiffness) {
   SG_VERIFY(safety > 0.0 && safety <= 1.0, "time step safety factor " << safety
                                                                       << " must be in (0, 1]");
   StableStep best;
@@ -94,13 +131,18 @@ StableStep estimate_stable_time_step(const Model& model, double safety) {
   const int count = static_cast<int>(model.bodies.size());
   std::vector<double> omega(model.bodies.size(), 0.0);
   parallel_for(count, [&](int b) {
-    if (model.bodies[static_cast<std::size_t>(b)].kind == BodyKind::deformable)
-      omega[static_cast<std::size_t>(b)] = estimate_max_frequency(model, b);
+    const Body& body = model.bodies[static_cast<std::size_t>(b)];
+    const double body_omega =
+        body.kind == BodyKind::deformable ? estimate_max_frequency(model, b) : 0.0;
+    const double contact_omega = contact_frequency(model, body, contact_stiffness);
+    omega[static_cast<std::size_t>(b)] = std::hypot(body_omega, contact_omega);
   });
   for (int b = 0; b < count; ++b) {
     const Body& body = model.bodies[static_cast<std::size_t>(b)];
-    if (body.kind != BodyKind::deformable) continue;
-    const double alpha = model.materials[static_cast<std::size_t>(body.material)].damping;
+    if (omega[static_cast<std::size_t>(b)] <= 0.0) continue;
+    const double alpha = body.kind == BodyKind::deformable
+                             ? model.materials[static_cast<std::size_t>(body.material)].damping
+                             : 0.0;
     const double dt = safety * critical_time_step(omega[static_cast<std::size_t>(b)], alpha);
     if (dt < best.dt) {
       best.dt = dt;

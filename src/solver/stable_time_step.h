@@ -30,6 +30,12 @@ struct StableStep {
   double omega_max = 0.0;     // its highest frequency
   bool damping_limited = false;  // xi > 1 for that body: the damping sets the limit
 };
-StableStep estimate_stable_time_step(const Model& model, double safety);
+// `contact_stiffness`: the largest contact penalty k (force / length^2), 0 without contacts.
+// A contour node of mass m and tributary length l on a two-sided contact (two passes) adds a
+// spring 2 k l: its frequency sqrt(2 k l / m) combines with the body's as
+// sqrt(omega_body^2 + omega_contact^2) (a bound for springs in parallel). Free rigid bodies
+// are bounded the same way with their whole contour.
+StableStep estimate_stable_time_step(const Model& model, double safety,
+                                     double contact_stiffness = 0.0);
 
 }  // namespace sg

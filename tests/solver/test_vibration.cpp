@@ -131,6 +131,7 @@ TEST(Vibration, LowestNonRigidFrequencyOfADiscMatchesTheAnalyticValue) {
   // Three rigid modes (two translations, one rotation) at zero frequency.
   for (int i = 0; i < 3; ++i) EXPECT_LT(std::abs(lambda(i)), 1e-6 * lambda(3)) << i;
   const double omega_discrete = std::sqrt(lambda(3));
+  for (int i = 0; i < 10; ++i) std::printf("mode %d: omega %.5f\n", i, std::sqrt(std::max(0.0, lambda(i))));
   std::printf("lowest non-rigid: discrete %.6f, analytic %.6f (omega a / c_s = %.4f), error %.3f%%\n",
               omega_discrete, omega_exact, omega_exact * radius / std::sqrt(m.mu / m.density),
               100 * (omega_discrete / omega_exact - 1));

@@ -1,0 +1,231 @@
+#include "contact/contact_system.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "model/kinematics.h"
+
+namespace sg {
+
+namespace {
+
+ContourView contour_view(const Model& model, const Body& body, const std::vector<Vec2>& positions) {
+  ContourView view;
+  view.points = std::span<const Vec2>(positions.data() + body.contour_begin,
+                                      static_cast<std::size_t>(body.contour_count()));
+  view.closed = true;
+  if (body.open_contour) view.closing_shift = Vec2(model.x_max - model.x_min, 0.0);
+  return view;
+}
+
+}  // namespace
+
+ContactSystem::ContactSystem(const Model& model, const MaterialPairTable& laws,
+                             const ContactSettings& settings)
+    : per_pass_laws_(laws.per_pass()), settings_(settings), broad_phase_([&] {
+        BroadPhaseParams p;
+        p.cutoff = settings.cutoff;
+        p.skin = settings.skin > 0.0 ? settings.skin : settings.cutoff;
+        p.periodic_x = model.periodic_x;
+        p.x_min = model.x_min;
+        p.x_max = model.x_max;
+        validate(p);
+        return p;
+      }()) {
+  SG_VERIFY(laws.material_count() == static_cast<int>(model.materials.size()),
+            "contact laws are defined for " << laws.material_count() << " materials, the model has "
+                                            << model.materials.size());
+  std::vector<int> present;
+  for (const Body& b : model.bodies)
+    present.push_back(b.material);
+  laws.verify_covers(present);
+  for (int a = 0; a < laws.material_count(); ++a)
+    for (int b = a; b < laws.material_count(); ++b)
+      if (laws.has(a, b))
+        max_stiffness_ = std::max(
+            {max_stiffness_, laws.at(a, b).normal_stiffness, laws.at(a, b).tangential_stiffness});
+  for (std::size_t k = 0; k < model.contour_point_count(); ++k)
+    node_body_.push_back(model.contour_body[k]);
+}
+
+void ContactSystem::update_geometry(const Model& model) {
+  compute_contour_positions(model, positions_);
+  if (previous_positions_.size() != positions_.size()) previous_positions_ = positions_;
+  const std::size_t n = positions_.size();
+  segment_start_.resize(n);
+  segment_end_.resize(n);
+  segment_body_.resize(n);
+  tributary_.resize(n);
+  // Segment k runs from contour point k to the next point of its body (global numbering:
+  // a body's segments are [contour_begin, contour_end), like its points).
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const Body& body = model.bodies[b];
+    const ContourView view = contour_view(model, body, positions_);
+    for (int s = 0; s < body.contour_count(); ++s) {
+      const auto k = static_cast<std::size_t>(body.contour_begin + s);
+      segment_start_[k] = view.segment_start(s);
+      segment_end_[k] = view.segment_end(s);
+      segment_body_[k] = static_cast<int>(b);
+    }
+    tributary_lengths(view, std::span<double>(tributary_.data() + body.contour_begin,
+                                              static_cast<std::size_t>(body.contour_count())));
+  }
+}
+
+ContactStepResult ContactSystem::add_contact_forces(Model& model) {
+  update_geometry(model);
+  const BroadPhaseInput input{positions_, node_body_, segment_start_, segment_end_, segment_body_};
+  if (broad_phase_.needs_rebuild(input)) broad_phase_.build(input);
+  const std::span<const ContactCandidate> candidates = broad_phase_.candidates();
+
+  // Group candidates by (slave point, master body): contiguous, since candidates are sorted
+  // by (node, segment) and a body's segments are contiguous.
+  struct Group {
+    std::size_t begin, end;
+  };
+  std::vector<Group> groups;
+  for (std::size_t i = 0; i < candidates.size();) {
+    std::size_t j = i + 1;
+    const int body = segment_body_[static_cast<std::size_t>(candidates[i].segment)];
+    while (j < candidates.size() && candidates[j].node == candidates[i].node &&
+           segment_body_[static_cast<std::size_t>(candidates[j].segment)] == body)
+      ++j;
+    groups.push_back({i, j});
+    i = j;
+  }
+
+  // Previous histories, sorted by (slave, master): looked up by binary search.
+  auto history_of = [&](int slave, BodyId master) -> ContactHistory {
+    const auto it =
+        std::lower_bound(histories_.begin(), histories_.end(), std::make_pair(slave, master),
+                         [](const ContactHistoryEntry& e, const std::pair<int, BodyId>& key) {
+                           return std::make_pair(e.slave_point, e.master_body) < key;
+                         });
+    if (it != histories_.end() && it->slave_point == slave && it->master_body == master)
+      return it->history;
+    return ContactHistory{};
+  };
+
+  std::vector<ContactRecord> results(groups.size());
+  std::vector<ContactHistory> new_history(groups.size());
+  std::vector<double> stored(groups.size(), 0.0);
+  const int group_count = static_cast<int>(groups.size());
+  const double period = model.x_max - model.x_min;
+#pragma omp parallel for schedule(static)
+  for (int g = 0; g < group_count; ++g) {
+    const Group& group = groups[static_cast<std::size_t>(g)];
+    const ContactCandidate& first = candidates[group.begin];
+    const int slave = first.node;
+    const BodyId master = segment_body_[static_cast<std::size_t>(first.segment)];
+    const Body& master_body = model.bodies[static_cast<std::size_t>(master)];
+    const BodyId slave_body = node_body_[static_cast<std::size_t>(slave)];
+    // Nearest periodic image of the node relative to the master: recomputed from current
+    // positions (the broad-phase shift is from build time).
+    Vec2 node = positions_[static_cast<std::size_t>(slave)];
+    double shift = 0.0;
+    if (model.periodic_x) {
+      shift = nearest_image_shift(broad_phase_.params(), node,
+                                  segment_start_[static_cast<std::size_t>(first.segment)],
+                                  segment_end_[static_cast<std::size_t>(first.segment)]);
+      node.x() += shift;
+    }
+    const ContourView view = contour_view(model, master_body, positions_);
+    int local[64];
+    int local_count = 0;
+    for (std::size_t c = group.begin; c < group.end && local_count < 64; ++c)
+      local[local_count++] = candidates[c].segment - master_body.contour_begin;
+    const NodeProjection proj = project_on_contour(
+        node, view, std::span<const int>(local, static_cast<std::size_t>(local_count)));
+    ContactRecord& r = results[static_cast<std::size_t>(g)];
+    ContactHistory h = history_of(slave, master);
+    if (proj.segment < 0 || (proj.gap >= settings_.cutoff && !h.active)) {
+      r.active = false;
+      new_history[static_cast<std::size_t>(g)] = ContactHistory{};
+      continue;
+    }
+    const int seg = master_body.contour_begin + proj.segment;
+    // Slip increment: relative tangential motion of the node and its projection since the
+    // previous evaluation (previous positions shifted by the same image).
+    const ContourView old_view = contour_view(model, master_body, previous_positions_);
+    Vec2 node_old = previous_positions_[static_cast<std::size_t>(slave)];
+    node_old.x() += shift;
+    // If the node or the body wrapped across the seam between evaluations, the displacement
+    // is taken modulo the period.
+    if (model.periodic_x) {
+      const double dx = (node.x() - node_old.x());
+      node_old.x() += period * std::round(dx / period);
+    }
+    const double ds = tangential_slip_increment(
+        node_old, old_view.segment_start(proj.segment), old_view.segment_end(proj.segment), node,
+        view.segment_start(proj.segment), view.segment_end(proj.segment), proj.t);
+    const ContactLawParams& law = per_pass_laws_.at(
+        model.bodies[static_cast<std::size_t>(slave_body)].material, master_body.material);
+    const ContactTraction tr = evaluate_contact_law(law, proj.gap, h.active ? ds : 0.0, h);
+    new_history[static_cast<std::size_t>(g)] = h;
+    r.slave_point = slave;
+    r.slave_body = slave_body;
+    r.master_body = master;
+    r.master_segment = seg;
+    r.t = proj.t;
+    r.position = positions_[static_cast<std::size_t>(slave)];
+    r.normal = proj.normal;
+    r.gap = proj.gap;
+    r.length = tributary_[static_cast<std::size_t>(slave)];
+    r.traction = tr;
+    r.active = h.active || tr.normal != 0.0 || tr.tangential != 0.0 || tr.dissipated != 0.0;
+    stored[static_cast<std::size_t>(g)] = r.length * stored_energy(law, proj.gap, h);
+  }
+
+  // Serial scatter in candidate order: deterministic whatever the thread count.
+  ContactStepResult result;
+  std::vector<ContactHistoryEntry> next;
+  records_.clear();
+  NodeState& nodes = model.nodes;
+  auto add_force_at_point = [&](int point, const Vec2& f, const Vec2& at) {
+    const BodyId b = node_body_[static_cast<std::size_t>(point)];
+    const Body& body = model.bodies[static_cast<std::size_t>(b)];
+    if (body.kind == BodyKind::rigid) {
+      const auto r = static_cast<std::size_t>(body.rigid_index);
+      model.rigid.fx[r] += f.x();
+      model.rigid.fy[r] += f.y();
+      Vec2 arm = at - Vec2(model.rigid.x[r], model.rigid.y[r]);
+      if (model.periodic_x) arm.x() -= period * std::round(arm.x() / period);
+      model.rigid.torque[r] += cross(arm, f);
+    } else {
+      const int node = body.node_begin + (point - body.contour_begin);
+      const ShapeRows& rows = model.node_rows;
+      for (auto k = rows.offset[static_cast<std::size_t>(node)];
+           k < rows.offset[static_cast<std::size_t>(node) + 1]; ++k) {
+        const auto j =
+            static_cast<std::size_t>(body.node_begin + rows.node[static_cast<std::size_t>(k)]);
+        nodes.fx[j] += rows.value[static_cast<std::size_t>(k)] * f.x();
+        nodes.fy[j] += rows.value[static_cast<std::size_t>(k)] * f.y();
+      }
+    }
+  };
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    const ContactRecord& r = results[g];
+    if (!r.active) continue;
+    const Vec2 tangent = perp(r.normal);
+    const Vec2 f = r.length * (r.traction.normal * r.normal + r.traction.tangential * tangent);
+    const Body& master = model.bodies[static_cast<std::size_t>(r.master_body)];
+    const int local = r.master_segment - master.contour_begin;
+    const int a = r.master_segment;
+    const int b = master.contour_begin + (local + 1) % master.contour_count();
+    add_force_at_point(r.slave_point, f, positions_[static_cast<std::size_t>(r.slave_point)]);
+    add_force_at_point(a, -(1.0 - r.t) * f, segment_start_[static_cast<std::size_t>(a)]);
+    add_force_at_point(b, -r.t * f, segment_end_[static_cast<std::size_t>(a)]);
+    result.dissipated += r.length * r.traction.dissipated;
+    result.stored_energy += stored[g];
+    ++result.active_contacts;
+    records_.push_back(r);
+    if (new_history[g].active || new_history[g].stored_slip != 0.0)
+      next.push_back({r.slave_point, r.master_body, new_history[g]});
+  }
+  histories_ = std::move(next);
+  previous_positions_ = positions_;
+  return result;
+}
+
+}  // namespace sg

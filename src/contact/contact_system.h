@@ -1,0 +1,101 @@
+#pragma once
+// The contact stage of a time step (DESIGN.md §2 "Contact"; paper 000 §2, paper 001 §2.1):
+// two-pass node-to-segment penalty contact between every pair of distinct bodies.
+//
+//   1. contour positions of all bodies (deformable: MLS-evaluated boundary nodes; rigid:
+//      moved contour points);
+//   2. broad phase (Verlet cell grid, periodic in x), rebuilt only when a point moved by more
+//      than half the skin;
+//   3. narrow phase per (slave contour point, master body): closest segment of the master
+//      among the candidates, signed gap, slip increment since the last evaluation;
+//   4. law (per material pair, strengths halved for each pass) with the history of that
+//      (slave point, master body) contact;
+//   5. force f = l (p_n n + p_t t) on the slave point (l its current tributary length), -f on
+//      the master segment's end points with weights (1 - s, s): action equals reaction;
+//      forces on a deformable body's contour point are spread to the MLS parameters with the
+//      node's own row N_J(X_I), on a rigid body they add to its force and torque.
+//
+// Determinism: narrow phase and laws run in parallel per candidate group into per-group
+// results; forces are scattered serially in candidate order.
+#include <vector>
+
+#include "contact/broad_phase.h"
+#include "contact/contact_law.h"
+#include "contact/material_pair_table.h"
+#include "contact/node_segment.h"
+#include "model/model.h"
+
+namespace sg {
+
+struct ContactSettings {
+  // Pairs whose gap is below `cutoff` are evaluated: at least the largest adhesive reach
+  // sigma_c / k_n of any cohesive law, and a fraction of the node spacing for the others.
+  double cutoff = 0.0;
+  double skin = 0.0;  // Verlet margin (length); 0: cutoff
+};
+
+// One evaluated contact, for output (VTK contact network) and tests.
+struct ContactRecord {
+  int slave_point = 0;  // global contour point
+  BodyId slave_body = 0, master_body = 0;
+  int master_segment = 0;        // global segment index (= its first contour point)
+  double t = 0.0;                // projection parameter on the segment
+  Vec2 position = Vec2::Zero();  // slave point
+  Vec2 normal = Vec2::Zero();    // master outward normal
+  double gap = 0.0;
+  double length = 0.0;       // tributary length of the slave point
+  ContactTraction traction;  // per unit length
+  bool active = false;       // the law carries load (or a bond holds)
+};
+
+// Persistent per-contact memory, keyed by (slave contour point, master body).
+struct ContactHistoryEntry {
+  int slave_point = 0;
+  BodyId master_body = 0;
+  ContactHistory history;
+};
+
+struct ContactStepResult {
+  double dissipated = 0.0;     // energy dissipated at contacts during this evaluation
+  double stored_energy = 0.0;  // elastic energy held by the contact springs now
+  int active_contacts = 0;
+};
+
+class ContactSystem {
+ public:
+  // `laws` holds whole-contact strengths (halved internally for the two passes). Verifies
+  // that every pair of materials present has a law.
+  ContactSystem(const Model& model, const MaterialPairTable& laws, const ContactSettings& settings);
+
+  // Evaluates all contacts at the model's current state and adds their forces to the node
+  // forces (fx, fy) and rigid forces (fx, fy, torque). Call once per step.
+  ContactStepResult add_contact_forces(Model& model);
+
+  const std::vector<ContactRecord>& records() const { return records_; }
+  const std::vector<ContactHistoryEntry>& histories() const { return histories_; }
+  void set_histories(std::vector<ContactHistoryEntry> histories) {
+    histories_ = std::move(histories);
+  }
+  // Previous contour positions (for slip increments); part of the restartable state.
+  const std::vector<Vec2>& previous_positions() const { return previous_positions_; }
+  void set_previous_positions(std::vector<Vec2> p) { previous_positions_ = std::move(p); }
+  const BroadPhase& broad_phase() const { return broad_phase_; }
+  const ContactSettings& settings() const { return settings_; }
+  // Largest penalty stiffness of any law (normal or tangential), for the stable step.
+  double max_stiffness() const { return max_stiffness_; }
+
+ private:
+  MaterialPairTable per_pass_laws_;
+  ContactSettings settings_;
+  BroadPhase broad_phase_;
+  double max_stiffness_ = 0.0;
+  std::vector<Vec2> positions_, previous_positions_;
+  std::vector<Vec2> segment_start_, segment_end_;
+  std::vector<int> segment_body_, node_body_;
+  std::vector<double> tributary_;
+  std::vector<ContactHistoryEntry> histories_;
+  std::vector<ContactRecord> records_;
+  void update_geometry(const Model& model);
+};
+
+}  // namespace sg

@@ -1,1 +1,0 @@
-// Placeholder so the stage library has a translation unit until its first source lands.
