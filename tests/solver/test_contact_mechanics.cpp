@@ -19,13 +19,17 @@ struct BlockOnPlane {
 };
 
 // A 1 x 0.5 rigid block resting on a 4 x 1 rigid plane, both with contour spacing h, the block
-// pressed in by `penetration` (its y held fixed: the normal force is then constant).
+// pressed in by `penetration` (its y held fixed: the normal force is then constant). The block
+// is offset by h/2 so that no plane node sits exactly under its corners: a node inside the
+// block next to its side projects onto the side (closest point) and snags it with a normal
+// force p_n l ~ N h / (2 L): a node-to-segment edge effect of order h / L, kept at ~1% of N
+// here by h = 0.01.
 BlockOnPlane block_on_plane(double h, double penetration) {
   BlockOnPlane s;
   const MaterialId m = s.model.add_material(scenes::rigid_material());
   s.plane = s.model.add_rigid_body("plane", make_rectangle(Vec2(-2, -1), Vec2(2, 0), h), m);
   s.block = s.model.add_rigid_body(
-      "block", make_rectangle(Vec2(-0.5, -penetration), Vec2(0.5, 0.5 - penetration), h), m);
+      "block", make_rectangle(Vec2(-0.5 + 0.5 * h, -penetration), Vec2(0.5 + 0.5 * h, 0.5 - penetration), h), m);
   scenes::fix_rigid(s.model, s.plane);
   RigidDrive& d = scenes::drive_of(s.model, s.block);
   d.mode[1] = DriveMode::velocity;
@@ -45,7 +49,7 @@ ContactLawParams coulomb(double mu) {
 }
 
 TEST(Coulomb, BlockSlidesWhenTheTangentialForceExceedsMuN) {
-  const double mu = 0.4, h = 0.05;
+  const double mu = 0.4, h = 0.01;
   auto run = [&](double force_ratio, double& slide, double& normal, double& dissipated,
                  double& friction_work) {
     BlockOnPlane s = block_on_plane(h, 1e-3);
@@ -59,10 +63,13 @@ TEST(Coulomb, BlockSlidesWhenTheTangentialForceExceedsMuN) {
     normal = -s.model.rigid.fy[0];  // the plane receives the block's push downwards
     RigidDrive& d = scenes::drive_of(s.model, s.block);
     d.mode[0] = DriveMode::force;
-    d.force[0] = force_ratio * mu * normal;
     const double x0 = s.model.rigid.x[1];
     friction_work = 0.0;
-    for (int k = 0; k < 4000; ++k) {
+    // The force is ramped up over 3000 steps (quasi-static: the block, with no damping, would
+    // otherwise overshoot its static deflection by a factor 2), then held for up to 3000 steps,
+    // or until the block has slid 0.5 (it stays on the plane).
+    for (int k = 0; k < 6000 && s.model.rigid.x[1] - x0 < 0.5; ++k) {
+      d.force[0] = force_ratio * mu * normal * std::min(1.0, k / 3000.0);
       const double x_before = s.model.rigid.x[1];
       solver.step(dt);
       // The friction force on the block is what it receives in x from the plane.
@@ -74,8 +81,8 @@ TEST(Coulomb, BlockSlidesWhenTheTangentialForceExceedsMuN) {
   double slide, normal, dissipated, work;
   run(0.98, slide, normal, dissipated, work);
   EXPECT_GT(normal, 0.0);
-  // Below the threshold: only the elastic tangential deflection, F / (2 k_t l) ~ 1e-5.
-  EXPECT_LT(std::abs(slide), 1e-4) << "slid under 0.98 mu N";
+  // Below the threshold: only the elastic tangential deflection, F / (2 k_t l) ~ 4e-4.
+  EXPECT_LT(std::abs(slide), 1e-3) << "slid under 0.98 mu N";
   run(1.02, slide, normal, dissipated, work);
   EXPECT_GT(slide, 1e-2) << "did not slide under 1.02 mu N";
   // Energy dissipated by the contacts = work of the friction force (to the elastic energy
@@ -105,7 +112,8 @@ double peak_bond_force(int direction, double h, double strength) {
   const BodyId upper = model.add_rigid_body("upper", make_rectangle(Vec2(-0.5, 0), Vec2(0.5, 0.5), h), m);
   scenes::fix_rigid(model, lower);
   scenes::fix_rigid(model, upper);
-  scenes::drive_of(model, upper).velocity[direction] = PiecewiseLinear::constant(0.01);
+  // Slow enough that the gap grows by 1e-6 per step: 1% of the breaking gap sigma_c / (2 k_n).
+  scenes::drive_of(model, upper).velocity[direction] = PiecewiseLinear::constant(0.001);
   ContactSettings settings;
   settings.cutoff = 0.5 * h;
   ContactSystem contacts(model, scenes::single_law(model, cohesive(strength)), settings);

@@ -46,7 +46,9 @@ double solve_and_measure(double h) {
   }
   // Dynamic relaxation: v <- (1 - c dt) v + dt f / m with c ~ 2 omega_min (critical damping of
   // the lowest mode, omega_min ~ 2.5 c_s / a).
-  const double dt = 0.9 * critical_time_step(estimate_max_frequency(model, 0), 0.0);
+  // 0.7 of the undamped limit: the mass-proportional damping lowers the stable step of
+  // symplectic Euler (to about 2 sqrt(1 - c dt / 2) / omega).
+  const double dt = 0.7 * critical_time_step(estimate_max_frequency(model, 0), 0.0);
   const double c = 2.0 * 2.5 * std::sqrt(m.mu / m.density) / radius;
   NodeState& s = model.nodes;
   double load_norm = 0.0;
@@ -66,7 +68,10 @@ double solve_and_measure(double h) {
       s.ux[i] += dt * s.vx[i];
       s.uy[i] += dt * s.vy[i];
     }
-    if (std::sqrt(residual) < 1e-9 * load_norm) break;
+    if (std::sqrt(residual) < 1e-9 * load_norm) {
+      std::printf("h = %.3f: %zu nodes, relaxed in %d iterations\n", h, n, it);
+      break;
+    }
   }
   double error2 = 0.0, norm2 = 0.0;
   for (int g = body.gauss_begin; g < body.gauss_end; ++g) {
