@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 
 #include "core/error.h"
 #include "io/atomic_file.h"
@@ -118,12 +119,13 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
       last_progress = clock::now();
       const double elapsed = std::chrono::duration<double>(last_progress - start).count();
       const double rate = static_cast<double>(s + 1) / elapsed;
-      *options.progress << "\r  t = " << std::setprecision(4) << solver.state().time << " / "
-                        << scenario.duration << "  (" << std::fixed << std::setprecision(1)
-                        << 100.0 * static_cast<double>(s + 1) / static_cast<double>(total_steps)
-                        << "%)  " << std::setprecision(0) << rate << " steps/s  ETA "
-                        << format_duration(static_cast<double>(total_steps - s - 1) / rate)
-                        << std::defaultfloat << "   " << std::flush;
+      std::ostringstream line;
+      line << "\r  t = " << std::setprecision(4) << solver.state().time << " / " << scenario.duration
+           << "  (" << std::fixed << std::setprecision(1)
+           << 100.0 * static_cast<double>(s + 1) / static_cast<double>(total_steps) << "%)  "
+           << std::setprecision(0) << rate << " steps/s  ETA "
+           << format_duration(static_cast<double>(total_steps - s - 1) / rate) << "   ";
+      *options.progress << line.str() << std::flush;
     }
   }
   write_field();
@@ -140,7 +142,7 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
       static_cast<double>(summary.nodes) * static_cast<double>(total_steps) / summary.wall_seconds;
   if (options.progress) {
     const EnergyLedger& e = solver.state().energy;
-    *options.progress << "\r" << std::string(78, ' ') << "\rdone: " << total_steps << " steps in "
+    *options.progress << "\r" << std::string(70, ' ') << "\rdone: " << total_steps << " steps in "
                       << format_duration(summary.wall_seconds) << "; outputs in " << dir.string()
                       << "\n  energy: kinetic " << e.kinetic << ", elastic " << e.elastic
                       << ", external work " << e.external_work << ", damping dissipated "
