@@ -27,15 +27,32 @@ BodyForceResult add_body_internal_forces(const Model& model, BodyId body_id, con
   if (viscous_fy) std::fill(viscous_fy, viscous_fy + body.node_count(), 0.0);
   for (int g = body.gauss_begin; g < body.gauss_end; ++g) {
     const auto begin = offset[g], end = offset[g + 1];
-    // Displacement gradient H = F - I and its rate.
+    // Displacement gradient H = F - I and its rate, in one pass over the row (the row's
+    // indices and gradients are loaded once).
     double h00 = 0, h01 = 0, h10 = 0, h11 = 0;
     double r00 = 0, r01 = 0, r10 = 0, r11 = 0;
-    for (auto k = begin; k < end; ++k) {
-      const auto j = node[k];
-      h00 += ux[j] * dndx[k];
-      h01 += ux[j] * dndy[k];
-      h10 += uy[j] * dndx[k];
-      h11 += uy[j] * dndy[k];
+    if (damped) {
+      for (auto k = begin; k < end; ++k) {
+        const auto j = node[k];
+        const double gx = dndx[k], gy = dndy[k];
+        h00 += ux[j] * gx;
+        h01 += ux[j] * gy;
+        h10 += uy[j] * gx;
+        h11 += uy[j] * gy;
+        r00 += vx[j] * gx;
+        r01 += vx[j] * gy;
+        r10 += vy[j] * gx;
+        r11 += vy[j] * gy;
+      }
+    } else {
+      for (auto k = begin; k < end; ++k) {
+        const auto j = node[k];
+        const double gx = dndx[k], gy = dndy[k];
+        h00 += ux[j] * gx;
+        h01 += ux[j] * gy;
+        h10 += uy[j] * gx;
+        h11 += uy[j] * gy;
+      }
     }
     Mat2 f;
     f << 1.0 + h00, h01, h10, 1.0 + h11;
@@ -49,39 +66,38 @@ BodyForceResult add_body_internal_forces(const Model& model, BodyId body_id, con
     Mat2 p = elastic.first_piola;
     const double w = model.gauss_weight[static_cast<std::size_t>(g)];
     result.elastic_energy += w * elastic.energy_density;
+    Mat2 p_viscous = Mat2::Zero();
     if (damped) {
-      for (auto k = begin; k < end; ++k) {
-        const auto j = node[k];
-        r00 += vx[j] * dndx[k];
-        r01 += vx[j] * dndy[k];
-        r10 += vy[j] * dndx[k];
-        r11 += vy[j] * dndy[k];
-      }
       Mat2 f_rate;
       f_rate << r00, r01, r10, r11;
       // Green-Lagrange strain rate E_dot = sym(F^T F_dot): zero for any rigid motion.
       const Mat2 ft_fdot = f.transpose() * f_rate;
       const Mat2 strain_rate = 0.5 * (ft_fdot + ft_fdot.transpose());
       const Mat2 s_viscous = viscous_second_piola(material, strain_rate);
-      const Mat2 p_viscous = f * s_viscous;
+      p_viscous = f * s_viscous;
       p += p_viscous;
       result.damping_power += w * (s_viscous.array() * strain_rate.array()).sum();
-      if (split_viscous) {
-        const double q00 = w * p_viscous(0, 0), q01 = w * p_viscous(0, 1);
-        const double q10 = w * p_viscous(1, 0), q11 = w * p_viscous(1, 1);
-        for (auto k = begin; k < end; ++k) {
-          const auto j = node[k];
-          viscous_fx[j] -= q00 * dndx[k] + q01 * dndy[k];
-          viscous_fy[j] -= q10 * dndx[k] + q11 * dndy[k];
-        }
-      }
     }
-    // f_J -= w P grad0 N_J
+    // f_J -= w P grad0 N_J (and the viscous part apart, for the energy ledger).
     const double p00 = w * p(0, 0), p01 = w * p(0, 1), p10 = w * p(1, 0), p11 = w * p(1, 1);
-    for (auto k = begin; k < end; ++k) {
-      const auto j = node[k];
-      fx[j] -= p00 * dndx[k] + p01 * dndy[k];
-      fy[j] -= p10 * dndx[k] + p11 * dndy[k];
+    if (split_viscous) {
+      const double q00 = w * p_viscous(0, 0), q01 = w * p_viscous(0, 1);
+      const double q10 = w * p_viscous(1, 0), q11 = w * p_viscous(1, 1);
+      for (auto k = begin; k < end; ++k) {
+        const auto j = node[k];
+        const double gx = dndx[k], gy = dndy[k];
+        fx[j] -= p00 * gx + p01 * gy;
+        fy[j] -= p10 * gx + p11 * gy;
+        viscous_fx[j] -= q00 * gx + q01 * gy;
+        viscous_fy[j] -= q10 * gx + q11 * gy;
+      }
+    } else {
+      for (auto k = begin; k < end; ++k) {
+        const auto j = node[k];
+        const double gx = dndx[k], gy = dndy[k];
+        fx[j] -= p00 * gx + p01 * gy;
+        fy[j] -= p10 * gx + p11 * gy;
+      }
     }
   }
   return result;

@@ -14,14 +14,21 @@ double EnergyLedger::residual() const {
 
 void ExplicitSolver::step(double dt) {
   NodeState& n = model_.nodes;
-  const std::size_t count = n.size();
   const double gx = model_.gravity.x(), gy = model_.gravity.y();
 
   // External forces first: with lumped (row-sum) masses, the consistent gravity load on the
-  // parameter I is integral(N_I rho g) = m_I g.
-  for (std::size_t i = 0; i < count; ++i) {
-    n.fx[i] = n.mass[i] * gx;
-    n.fy[i] = n.mass[i] * gy;
+  // parameter I is integral(N_I rho g) = m_I g. Loops over nodes run per body in parallel,
+  // sums are kept per body and added in body order: the result does not depend on the
+  // number of threads.
+  const int body_count = static_cast<int>(model_.bodies.size());
+#pragma omp parallel for schedule(static)
+  for (int b = 0; b < body_count; ++b) {
+    const Body& body = model_.bodies[static_cast<std::size_t>(b)];
+    for (int k = body.node_begin; k < body.node_end; ++k) {
+      const auto i = static_cast<std::size_t>(k);
+      n.fx[i] = n.mass[i] * gx;
+      n.fy[i] = n.mass[i] * gy;
+    }
   }
   RigidState& rigid = model_.rigid;
   std::fill(rigid.fx.begin(), rigid.fx.end(), 0.0);
@@ -37,23 +44,39 @@ void ExplicitSolver::step(double dt) {
     SG_THROW(e.what() << " at step " << state_.step << ", time " << state_.time);
   }
 
-  double kinetic = 0.0, external_power = 0.0;
-  double viscous_work_new = 0.0;  // sum of f_v,n . v_n+1/2
-  double finite_probe = 0.0;  // becomes NaN iff some updated value is not finite (0 * inf = NaN)
-  for (std::size_t i = 0; i < count; ++i) {
-    const double vx_old = n.vx[i], vy_old = n.vy[i];
-    n.vx[i] += dt * n.inverse_mass[i] * n.fx[i];
-    n.vy[i] += dt * n.inverse_mass[i] * n.fy[i];
-    n.ux[i] += dt * n.vx[i];
-    n.uy[i] += dt * n.vy[i];
-    kinetic += 0.5 * n.mass[i] * (vx_old * n.vx[i] + vy_old * n.vy[i]);
-    viscous_work_new += n.viscous_fx[i] * n.vx[i] + n.viscous_fy[i] * n.vy[i];
-    external_power += n.mass[i] * (gx * n.vx[i] + gy * n.vy[i]);
-    finite_probe += 0.0 * (n.ux[i] + n.uy[i] + n.vx[i] + n.vy[i]);
+  // Per body: kinetic energy (time-centred), power of gravity, f_v . v_n+1/2, and a probe
+  // that becomes NaN iff some updated value is not finite (0 * inf = NaN).
+  body_sums_.assign(4 * model_.bodies.size(), 0.0);
+#pragma omp parallel for schedule(static)
+  for (int b = 0; b < body_count; ++b) {
+    const Body& body = model_.bodies[static_cast<std::size_t>(b)];
+    double kinetic = 0.0, external_power = 0.0, viscous_work = 0.0, finite_probe = 0.0;
+    for (int k = body.node_begin; k < body.node_end; ++k) {
+      const auto i = static_cast<std::size_t>(k);
+      const double vx_old = n.vx[i], vy_old = n.vy[i];
+      n.vx[i] += dt * n.inverse_mass[i] * n.fx[i];
+      n.vy[i] += dt * n.inverse_mass[i] * n.fy[i];
+      n.ux[i] += dt * n.vx[i];
+      n.uy[i] += dt * n.vy[i];
+      kinetic += 0.5 * n.mass[i] * (vx_old * n.vx[i] + vy_old * n.vy[i]);
+      viscous_work += n.viscous_fx[i] * n.vx[i] + n.viscous_fy[i] * n.vy[i];
+      external_power += n.mass[i] * (gx * n.vx[i] + gy * n.vy[i]);
+      finite_probe += 0.0 * (n.ux[i] + n.uy[i] + n.vx[i] + n.vy[i]);
+    }
+    double* sums = body_sums_.data() + 4 * static_cast<std::size_t>(b);
+    sums[0] = kinetic;
+    sums[1] = external_power;
+    sums[2] = viscous_work;
+    sums[3] = finite_probe;
+  }
+  double kinetic = 0.0, external_power = 0.0, viscous_work_new = 0.0, finite_probe = 0.0;
+  for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
+    kinetic += body_sums_[4 * b];
+    external_power += body_sums_[4 * b + 1];
+    viscous_work_new += body_sums_[4 * b + 2];
+    finite_probe += body_sums_[4 * b + 3];
   }
 
-  // The ledger describes the configuration u_n: work and dissipation up to t_n (the increments
-  // of the previous step), kinetic and elastic energy at t_n.
   const auto [rigid_kinetic, rigid_power] = advance_rigid_bodies(dt);
   kinetic += rigid_kinetic;
   external_power += rigid_power;

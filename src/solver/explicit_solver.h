@@ -11,6 +11,7 @@
 // energy plus the elastic energy is exactly conserved by the scheme, so the ledger measures
 // the physics and not the O(dt) staggering of the update.
 #include <string>
+#include <vector>
 
 #include "contact/contact_system.h"
 #include "model/model.h"
@@ -59,6 +60,7 @@ class ExplicitSolver {
   // ledger always describes one instant.
   double pending_external_work_ = 0.0;
   double pending_damping_dissipation_ = 0.0;
+  std::vector<double> body_sums_;  // per-body partial sums of the update (scratch)
   void check_finite_velocities() const;
   // Advances rigid bodies; returns (kinetic energy time-centred, external power).
   std::pair<double, double> advance_rigid_bodies(double dt);
