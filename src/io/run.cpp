@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <chrono>
+#include <memory>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -10,6 +11,8 @@
 
 #include "core/error.h"
 #include "io/atomic_file.h"
+#include "io/contact_vtk.h"
+#include "io/grain_snapshot_writer.h"
 #include "io/vtk_writer.h"
 #include "solver/explicit_solver.h"
 #include "solver/stable_time_step.h"
@@ -67,7 +70,15 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
   std::filesystem::create_directories(dir / "fields");
 
   Model model = build_model(scenario);
-  const StableStep stable = estimate_stable_time_step(model, scenario.time_step_safety);
+  std::unique_ptr<ContactSystem> contacts;
+  double contact_stiffness = 0.0;
+  if (!scenario.contact_laws.empty()) {
+    contacts = std::make_unique<ContactSystem>(model, contact_law_table(scenario),
+                                               contact_settings(scenario));
+    contact_stiffness = contacts->max_stiffness();
+  }
+  const StableStep stable =
+      estimate_stable_time_step(model, scenario.time_step_safety, contact_stiffness);
   const double dt = scenario.fixed_time_step > 0.0 ? scenario.fixed_time_step : stable.dt;
   write_run_log(dir / "run.log", scenario, model, stable, dt);
   if (options.progress)
@@ -83,12 +94,29 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
   const std::filesystem::path partial_series = dir / "series.csv.partial";
   std::ofstream series(partial_series, std::ios::trunc);
   SG_VERIFY(series, "cannot write '" << partial_series.string() << "'");
+  // Driven bodies (rigid bodies with an imposed velocity or force): the force they receive
+  // from the granular system and their position.
+  std::vector<BodyId> driven;
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const Body& body = model.bodies[b];
+    if (body.kind != BodyKind::rigid) continue;
+    const RigidDrive& d = model.rigid.drive[static_cast<std::size_t>(body.rigid_index)];
+    if (d.mode[0] != DriveMode::free || d.mode[1] != DriveMode::free) driven.push_back(static_cast<BodyId>(b));
+  }
   series << "time,step,dt,kinetic_energy,elastic_energy,external_work,damping_dissipation,"
-            "contact_dissipation,energy_residual\n";
+            "contact_dissipation,energy_residual";
+  for (BodyId b : driven) {
+    const std::string& name = model.bodies[static_cast<std::size_t>(b)].name;
+    series << ',' << name << "_fx," << name << "_fy," << name << "_x," << name << "_y";
+  }
+  series << '\n';
   series << std::setprecision(12);
   PvdCollection pvd(dir / "fields.pvd");
 
-  ExplicitSolver solver(model);
+  ExplicitSolver solver(model, contacts.get());
+  if (contacts) std::filesystem::create_directories(dir / "contacts");
+  std::filesystem::create_directories(dir / "grains");
+  PvdCollection contact_pvd(dir / "contacts.pvd");
   int snapshot = 0;
   double next_series = 0.0, next_field = 0.0;
   const long total_steps = static_cast<long>(std::ceil(scenario.duration / dt - 1e-9));
@@ -98,6 +126,13 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
     std::snprintf(name, sizeof name, "%06d.vtu", snapshot++);
     write_vtu_snapshot(model, dir / "fields" / name);
     pvd.add(solver.state().time, std::string("fields/") + name);
+    if (contacts) {
+      write_contact_snapshot(*contacts, dir / "contacts" / name);
+      contact_pvd.add(solver.state().time, std::string("contacts/") + name);
+    }
+    char grains_name[32];
+    std::snprintf(grains_name, sizeof grains_name, "%06d.csv", snapshot - 1);
+    write_grain_snapshot(model, dir / "grains" / grains_name);
   };
   for (long s = 0; s < total_steps; ++s) {
     const double t = solver.state().time;
@@ -111,8 +146,13 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
       const EnergyLedger& e = solver.state().energy;
       series << t << ',' << s << ',' << dt << ',' << e.kinetic << ',' << e.elastic << ','
              << e.external_work << ',' << e.damping_dissipated << ','
-             << e.contact_dissipated << ',' << e.residual() << '\n'
-             << std::flush;
+             << e.contact_dissipated << ',' << e.residual();
+      for (BodyId b : driven) {
+        const auto r = static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index);
+        series << ',' << model.rigid.fx[r] << ',' << model.rigid.fy[r] << ',' << model.rigid.x[r]
+               << ',' << model.rigid.y[r];
+      }
+      series << '\n' << std::flush;
       next_series += scenario.series_period;
     }
     if (options.progress && clock::now() - last_progress > std::chrono::seconds(1)) {
@@ -142,7 +182,7 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
       static_cast<double>(summary.nodes) * static_cast<double>(total_steps) / summary.wall_seconds;
   if (options.progress) {
     const EnergyLedger& e = solver.state().energy;
-    *options.progress << "\r" << std::string(70, ' ') << "\rdone: " << total_steps << " steps in "
+    *options.progress << std::defaultfloat << "\r" << std::string(70, ' ') << "\rdone: " << total_steps << " steps in "
                       << format_duration(summary.wall_seconds) << "; outputs in " << dir.string()
                       << "\n  energy: kinetic " << e.kinetic << ", elastic " << e.elastic
                       << ", external work " << e.external_work << ", damping dissipated "

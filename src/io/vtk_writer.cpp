@@ -42,6 +42,26 @@ NodalFields evaluate_fields(const Model& model) {
       f.material_id[k] = body.material;
     }
   }
+  // Rigid bodies: their contour points, drawn as one polygon each.
+  std::vector<Vec2> contour;
+  compute_contour_positions(model, contour);
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const Body& body = model.bodies[b];
+    if (body.kind != BodyKind::rigid) continue;
+    const auto r = static_cast<std::size_t>(body.rigid_index);
+    const Vec2 c(model.rigid.x[r], model.rigid.y[r]);
+    const double omega = model.rigid.omega[r];
+    for (int k = body.contour_begin; k < body.contour_end; ++k) {
+      const Vec2 x = contour[static_cast<std::size_t>(k)];
+      f.position.push_back(x);
+      f.displacement.push_back(Vec2::Zero());
+      f.velocity.push_back(Vec2(model.rigid.vx[r], model.rigid.vy[r]) + omega * perp(x - c));
+      f.stress.push_back(CauchyStress{0, 0, 0, 0});
+      f.strain_norm.push_back(0.0);
+      f.body_id.push_back(static_cast<int>(b));
+      f.material_id.push_back(body.material);
+    }
+  }
   return f;
 }
 
@@ -64,8 +84,18 @@ void vector_array(std::ostream& out, const char* name, const std::vector<Vec2>& 
 
 void write_vtu_snapshot(const Model& model, const std::filesystem::path& path) {
   const NodalFields f = evaluate_fields(model);
-  const std::size_t n = model.node_count();
-  const std::size_t cells = model.triangles.size();
+  const std::size_t n = f.position.size();
+  // Cells: the triangles of deformable bodies, then one polygon per rigid body (its contour
+  // points follow the field nodes in the point list).
+  std::vector<std::vector<std::size_t>> polygons;
+  std::size_t next_point = model.node_count();
+  for (const Body& body : model.bodies) {
+    if (body.kind != BodyKind::rigid) continue;
+    std::vector<std::size_t> poly;
+    for (int k = 0; k < body.contour_count(); ++k) poly.push_back(next_point++);
+    polygons.push_back(std::move(poly));
+  }
+  const std::size_t cells = model.triangles.size() + polygons.size();
   write_file_atomically(path, [&](std::ostream& out) {
     out << std::setprecision(9);
     out << "<?xml version=\"1.0\"?>\n"
@@ -77,12 +107,23 @@ void write_vtu_snapshot(const Model& model, const std::filesystem::path& path) {
     out << "      </Points>\n      <Cells>\n"
            "        <DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n";
     for (const auto& t : model.triangles) out << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+    for (const auto& poly : polygons) {
+      for (std::size_t p : poly) out << p << ' ';
+      out << '\n';
+    }
     out << "        </DataArray>\n"
            "        <DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n";
-    for (std::size_t c = 0; c < cells; ++c) out << 3 * (c + 1) << (c % 16 == 15 ? '\n' : ' ');
+    std::size_t offset = 0;
+    for (std::size_t c = 0; c < model.triangles.size(); ++c) {
+      offset += 3;
+      out << offset << (c % 16 == 15 ? '\n' : ' ');
+    }
+    for (const auto& poly : polygons) out << (offset += poly.size()) << ' ';
     out << "\n        </DataArray>\n"
            "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-    for (std::size_t c = 0; c < cells; ++c) out << "5" << (c % 32 == 31 ? '\n' : ' ');  // VTK_TRIANGLE
+    for (std::size_t c = 0; c < model.triangles.size(); ++c)
+      out << "5" << (c % 32 == 31 ? '\n' : ' ');  // VTK_TRIANGLE
+    for (std::size_t c = 0; c < polygons.size(); ++c) out << "7 ";  // VTK_POLYGON
     out << "\n        </DataArray>\n      </Cells>\n"
            "      <PointData Scalars=\"von_mises\" Vectors=\"velocity\">\n";
     vector_array(out, "displacement", f.displacement);

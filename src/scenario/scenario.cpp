@@ -1,5 +1,6 @@
 #include "scenario/scenario.h"
 
+#include <algorithm>
 #include <set>
 
 #include "core/error.h"
@@ -28,7 +29,7 @@ MaterialDef read_material(const TomlReader& t) {
 
 GrainDef read_grain(const TomlReader& t, std::size_t index) {
   t.reject_unknown_keys({"name", "shape", "center", "radius", "semi_axes", "angle", "material",
-                         "velocity", "spin", "stretch"});
+                         "velocity", "spin", "stretch", "rigid"});
   GrainDef g;
   g.name = t.string("name", "grain_" + std::to_string(index));
   g.shape = t.one_of("shape", {"disc", "ellipse"}, "disc") == "disc" ? GrainShape::disc
@@ -48,7 +49,49 @@ GrainDef read_grain(const TomlReader& t, std::size_t index) {
   g.stretch = t.vec2("stretch", Vec2(1.0, 1.0));
   if (!(g.stretch.x() > 0 && g.stretch.y() > 0))
     t.fail("stretch", "expected two positive stretch ratios [sx, sy]");
+  g.rigid = t.boolean("rigid", false);
+  if (g.rigid && g.stretch != Vec2(1.0, 1.0)) t.fail("stretch", "a rigid grain cannot be stretched");
   return g;
+}
+
+WallDef read_wall(const TomlReader& t, std::size_t index) {
+  t.reject_unknown_keys({"name", "lower_left", "upper_right", "material", "velocity"});
+  WallDef w;
+  w.name = t.string("name", "wall_" + std::to_string(index));
+  w.lower_left = t.vec2("lower_left");
+  w.upper_right = t.vec2("upper_right");
+  if (!(w.upper_right.x() > w.lower_left.x() && w.upper_right.y() > w.lower_left.y()))
+    t.fail("upper_right", "expected a corner above and to the right of lower_left");
+  w.material = t.string("material");
+  w.velocity = t.vec2("velocity", Vec2::Zero());
+  return w;
+}
+
+ContactLawDef read_contact_law(const TomlReader& t) {
+  t.reject_unknown_keys({"materials", "law", "normal_stiffness", "tangential_stiffness",
+                         "friction", "adhesion", "shear_strength", "cohesion"});
+  ContactLawDef d;
+  const auto pair = t.string_pair("materials");
+  d.material_a = pair.first;
+  d.material_b = pair.second;
+  const std::string law = t.one_of("law", {"frictionless", "coulomb", "cohesive"}, "frictionless");
+  d.params.kind = law == "frictionless" ? ContactLawKind::frictionless
+                  : law == "coulomb"    ? ContactLawKind::coulomb
+                                        : ContactLawKind::cohesive;
+  d.params.normal_stiffness = t.positive("normal_stiffness");
+  if (d.params.kind != ContactLawKind::frictionless)
+    d.params.tangential_stiffness = t.positive("tangential_stiffness", d.params.normal_stiffness);
+  d.params.friction = t.non_negative("friction", 0.0);
+  // cohesion = c sets sigma_c = tau_c = c (the papers' single parameter).
+  const double cohesion = t.non_negative("cohesion", 0.0);
+  d.params.adhesion = t.non_negative("adhesion", cohesion);
+  d.params.shear_strength = t.non_negative("shear_strength", cohesion);
+  try {
+    validate(d.params, "contact law for materials '" + d.material_a + "' and '" + d.material_b + "'");
+  } catch (const Error& e) {
+    t.fail("law", e.what());
+  }
+  return d;
 }
 
 }  // namespace
@@ -57,7 +100,7 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
   const TomlDocument document(file);
   const TomlReader root = document.root();
   root.reject_unknown_keys({"name", "time", "output", "discretization", "physics", "materials",
-                            "grains"});
+                            "grains", "walls", "contact_laws", "contact", "periodic"});
   ScenarioDef s;
   s.source = file;
   s.name = root.string("name", file.stem().string());
@@ -114,7 +157,70 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
     if (!grain_names.insert(s.grains.back().name).second)
       grains[i].fail("name", "grain name '" + s.grains.back().name + "' is used twice");
   }
+  const std::vector<TomlReader> walls = root.array_of_tables("walls");
+  for (std::size_t i = 0; i < walls.size(); ++i) {
+    s.walls.push_back(read_wall(walls[i], i));
+    if (!material_names.count(s.walls.back().material))
+      walls[i].fail("material", "unknown material '" + s.walls.back().material + "'");
+    if (!grain_names.insert(s.walls.back().name).second)
+      walls[i].fail("name", "body name '" + s.walls.back().name + "' is used twice");
+  }
+  double cohesive_reach = 0.0;
+  for (const TomlReader& t : root.array_of_tables("contact_laws")) {
+    s.contact_laws.push_back(read_contact_law(t));
+    for (const std::string* m : {&s.contact_laws.back().material_a, &s.contact_laws.back().material_b})
+      if (!material_names.count(*m)) t.fail("materials", "unknown material '" + *m + "'");
+    const ContactLawParams& p = s.contact_laws.back().params;
+    cohesive_reach = std::max(cohesive_reach, 0.5 * p.adhesion / p.normal_stiffness);
+  }
+  if (auto t = root.table("contact")) {
+    t->reject_unknown_keys({"cutoff", "skin"});
+    s.contact_cutoff = t->non_negative("cutoff", 0.0);
+    s.contact_skin = t->non_negative("skin", 0.0);
+    if (s.contact_cutoff > 0.0 && s.contact_cutoff < cohesive_reach)
+      t->fail("cutoff", "must be at least the cohesive reach sigma_c / (2 k_n) = " +
+                            std::to_string(cohesive_reach));
+  }
+  if (s.contact_cutoff == 0.0)
+    s.contact_cutoff = std::max(0.25 * s.discretization.mesh.spacing, 1.5 * cohesive_reach);
+  if (auto t = root.table("periodic")) {
+    t->reject_unknown_keys({"x_min", "x_max"});
+    s.periodic_x = true;
+    s.x_min = t->number("x_min");
+    s.x_max = t->number("x_max");
+    if (!(s.x_max > s.x_min)) t->fail("x_max", "expected x_max > x_min");
+  }
+  if (!s.contact_laws.empty()) {
+    // Every pair of materials in use needs a law: checked here, with the file, not mid-run.
+    std::set<std::string> used;
+    for (const GrainDef& g : s.grains) used.insert(g.material);
+    for (const WallDef& w : s.walls) used.insert(w.material);
+    try {
+      MaterialPairTable table = contact_law_table(s);
+      std::vector<int> ids;
+      for (const std::string& m : used) ids.push_back(table.find_material(m));
+      table.verify_covers(ids);
+    } catch (const Error& e) {
+      root.fail("contact_laws", e.what());
+    }
+  }
   return s;
+}
+
+MaterialPairTable contact_law_table(const ScenarioDef& scenario) {
+  std::vector<std::string> names;
+  for (const MaterialDef& m : scenario.materials) names.push_back(m.name);
+  MaterialPairTable table(names);
+  for (const ContactLawDef& law : scenario.contact_laws)
+    table.set(law.material_a, law.material_b, law.params);
+  return table;
+}
+
+ContactSettings contact_settings(const ScenarioDef& scenario) {
+  ContactSettings settings;
+  settings.cutoff = scenario.contact_cutoff;
+  settings.skin = scenario.contact_skin > 0.0 ? scenario.contact_skin : scenario.contact_cutoff;
+  return settings;
 }
 
 Model build_model(const ScenarioDef& scenario) {
@@ -127,14 +233,36 @@ Model build_model(const ScenarioDef& scenario) {
     SG_THROW("unknown material '" << name << "'");
   };
   const double h = scenario.discretization.mesh.spacing;
+  model.periodic_x = scenario.periodic_x;
+  model.x_min = scenario.x_min;
+  model.x_max = scenario.x_max;
   for (const GrainDef& g : scenario.grains) {
     const Polygon contour = g.shape == GrainShape::disc
                                 ? make_disc(g.center, g.radius, h)
                                 : make_ellipse(g.center, g.semi_axes.x(), g.semi_axes.y(), g.angle, h);
+    if (g.rigid) {
+      const BodyId b = model.add_rigid_body(g.name, contour, material_id(g.material));
+      const auto r = static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index);
+      model.rigid.vx[r] = g.velocity.x();
+      model.rigid.vy[r] = g.velocity.y();
+      model.rigid.omega[r] = g.spin;
+      continue;
+    }
     const BodyId b =
         model.add_deformable_body(g.name, contour, material_id(g.material), scenario.discretization);
     if (g.stretch != Vec2(1.0, 1.0)) set_affine_deformation(model, b, g.stretch.asDiagonal());
     set_rigid_velocity(model, b, g.velocity, g.spin);
+  }
+  for (const WallDef& w : scenario.walls) {
+    const BodyId b = model.add_rigid_body(w.name, make_rectangle(w.lower_left, w.upper_right, h),
+                                          material_id(w.material));
+    RigidDrive& drive =
+        model.rigid.drive[static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index)];
+    const double v[3] = {w.velocity.x(), w.velocity.y(), 0.0};
+    for (int d = 0; d < 3; ++d) {
+      drive.mode[d] = DriveMode::velocity;
+      drive.velocity[d] = PiecewiseLinear::constant(v[d]);
+    }
   }
   return model;
 }

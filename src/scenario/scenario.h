@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/contact_system.h"
 #include "material/material.h"
 #include "meshfree/body_discretization.h"
 #include "model/model.h"
@@ -25,6 +26,20 @@ struct GrainDef {
   Vec2 velocity = Vec2::Zero();      // initial velocity (length / time)
   double spin = 0.0;                 // initial angular velocity (rad / time)
   Vec2 stretch = Vec2(1.0, 1.0);     // initial homogeneous stretch along x and y (1 = none)
+  bool rigid = false;                // rigid grain (3 DOF) instead of a meshfree continuum
+};
+
+// A rigid wall: a rectangle, fixed or moving at an imposed velocity.
+struct WallDef {
+  std::string name;
+  Vec2 lower_left = Vec2::Zero(), upper_right = Vec2::Zero();  // length
+  std::string material;
+  Vec2 velocity = Vec2::Zero();  // imposed velocity (length / time); rotation is held
+};
+
+struct ContactLawDef {
+  std::string material_a, material_b;
+  ContactLawParams params;
 };
 
 struct ScenarioDef {
@@ -44,7 +59,19 @@ struct ScenarioDef {
   Vec2 gravity = Vec2::Zero();
   std::vector<MaterialDef> materials;
   std::vector<GrainDef> grains;
+  std::vector<WallDef> walls;
+  // [[contact_laws]] and [contact]: no laws, no contacts.
+  std::vector<ContactLawDef> contact_laws;
+  double contact_cutoff = 0.0;  // 0: a quarter of the node spacing, at least the cohesive reach
+  double contact_skin = 0.0;    // 0: equal to the cutoff
+  // [periodic]: periodic in x over [x_min, x_max) when set.
+  bool periodic_x = false;
+  double x_min = 0.0, x_max = 0.0;
 };
+
+// The material-pair table of a scenario (requires contact laws).
+MaterialPairTable contact_law_table(const ScenarioDef& scenario);
+ContactSettings contact_settings(const ScenarioDef& scenario);
 
 // Reads and validates a scenario file. Errors: "<file>:<line>: key '<key>': <expected>".
 ScenarioDef load_scenario(const std::filesystem::path& file);

@@ -107,6 +107,16 @@ std::string TomlReader::one_of(const std::string& key, std::initializer_list<con
   fail(key, "expected one of " + list + ", got \"" + v + "\"");
 }
 
+std::pair<std::string, std::string> TomlReader::string_pair(const std::string& key) const {
+  const toml::node* n = find(key);
+  if (!n) fail(key, "required pair of names [\"a\", \"b\"] is missing");
+  const toml::array* a = n->as_array();
+  if (!a || a->size() != 2 || !(*a)[0].value_exact<std::string>() ||
+      !(*a)[1].value_exact<std::string>())
+    fail(key, "expected a pair of names [\"a\", \"b\"]");
+  return {*(*a)[0].value_exact<std::string>(), *(*a)[1].value_exact<std::string>()};
+}
+
 Vec2 TomlReader::vec2(const std::string& key) const {
   const toml::node* n = find(key);
   if (!n) fail(key, "required pair [x, y] is missing");

@@ -7,6 +7,7 @@
 #include <initializer_list>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "geometry/vec2.h"
@@ -36,6 +37,8 @@ class TomlReader {
   std::string string(const std::string& key, const std::string& fallback) const;
   std::string one_of(const std::string& key, std::initializer_list<const char*> choices,
                      const char* fallback) const;
+  // A required pair of strings ["a", "b"].
+  std::pair<std::string, std::string> string_pair(const std::string& key) const;
   Vec2 vec2(const std::string& key) const;
   Vec2 vec2(const std::string& key, const Vec2& fallback) const;
   bool boolean(const std::string& key, bool fallback) const;

@@ -1,0 +1,144 @@
+// Scenario files: the examples load and run; bad input gives one clear error naming the
+// file, the line and the key; a run folder is complete only when the run is.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.h"
+#include "io/run.h"
+#include "scenario/scenario.h"
+
+namespace sg {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path write_temp(const std::string& name, const std::string& text) {
+  const fs::path dir = fs::temp_directory_path() / "softgrain_test_scenario";
+  fs::create_directories(dir);
+  const fs::path p = dir / name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+const char* kValid = R"(
+name = "tiny"
+[time]
+duration = 0.05
+[output]
+directory = "OUT"
+[discretization]
+node_spacing = 0.15
+[[materials]]
+name = "soft"
+young = 10.0
+poisson = 0.3
+damping = 0.01
+[[materials]]
+name = "hard"
+young = 100.0
+[[contact_laws]]
+materials = ["soft", "hard"]
+law = "coulomb"
+normal_stiffness = 1000.0
+friction = 0.3
+[[contact_laws]]
+materials = ["soft", "soft"]
+law = "cohesive"
+normal_stiffness = 1000.0
+cohesion = 0.5
+[[contact_laws]]
+materials = ["hard", "hard"]
+law = "frictionless"
+normal_stiffness = 1000.0
+[[walls]]
+name = "floor"
+lower_left = [-2.0, -1.0]
+upper_right = [2.0, -0.5]
+material = "hard"
+[[grains]]
+center = [0.0, 0.0]
+radius = 0.5
+material = "soft"
+velocity = [0.0, -1.0]
+[[grains]]
+center = [1.2, 0.0]
+radius = 0.4
+material = "hard"
+rigid = true
+)";
+
+std::string replace(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return text.replace(at, from.size(), to);
+}
+
+std::string error_of(const std::string& text) {
+  const fs::path p = write_temp("bad.toml", text);
+  try {
+    load_scenario(p);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Scenario, ValidFileRunsToACompleteFolder) {
+  const fs::path out = fs::temp_directory_path() / "softgrain_test_scenario" / "out";
+  fs::remove_all(out);
+  const ScenarioDef s = load_scenario(write_temp("tiny.toml", kValid));
+  EXPECT_EQ(s.grains.size(), 2u);
+  EXPECT_EQ(s.walls.size(), 1u);
+  EXPECT_EQ(s.contact_laws[1].params.adhesion, 0.5);
+  RunOptions options;
+  options.output_root_override = out;
+  const RunSummary r = run_scenario(s, options);
+  EXPECT_GT(r.steps, 0);
+  EXPECT_TRUE(fs::exists(out / "tiny" / "series.csv"));
+  EXPECT_FALSE(fs::exists(out / "tiny" / "series.csv.partial"));
+  EXPECT_TRUE(fs::exists(out / "tiny" / "fields.pvd"));
+  EXPECT_TRUE(fs::exists(out / "tiny" / "contacts.pvd"));
+  EXPECT_TRUE(fs::exists(out / "tiny" / "run.log"));
+  std::ifstream series(out / "tiny" / "series.csv");
+  std::string header;
+  std::getline(series, header);
+  EXPECT_NE(header.find("floor_fy"), std::string::npos) << header;
+}
+
+TEST(Scenario, ExamplesLoad) {
+  for (const char* name : {"free-grains.toml", "mixed-box.toml"}) {
+    const ScenarioDef s = load_scenario(fs::path(SOFTGRAIN_SOURCE_DIR) / "examples" / name);
+    EXPECT_FALSE(s.grains.empty()) << name;
+  }
+}
+
+TEST(Scenario, ErrorsNameFileLineAndKey) {
+  struct Case {
+    std::string from, to, expected;
+  };
+  const Case cases[] = {
+      {"duration = 0.05", "duration = -1", "bad.toml:4: key 'time.duration': expected a positive number"},
+      {"duration = 0.05", "duration = \"long\"", "key 'time.duration': expected a number"},
+      {"duration = 0.05", "", "key 'time.duration': required number is missing"},
+      {"poisson = 0.3", "poisson = 0.5", "key 'materials[0].poisson': expected a number in (-1, 0.5)"},
+      {"young = 10.0", "young = 0.0", "key 'materials[0].young': expected a positive number"},
+      {"radius = 0.5", "radius = 0.5\nradiuss = 1", "key 'grains[0].radiuss': unknown key"},
+      {"material = \"soft\"\nvelocity", "material = \"rock\"\nvelocity", "key 'grains[0].material': unknown material 'rock'"},
+      {"cohesion = 0.5", "cohesion = -0.5", "key 'contact_laws[1].cohesion': expected a number >= 0"},
+      {"normal_stiffness = 1000.0\nfriction", "normal_stiffness = 0.0\nfriction", "key 'contact_laws[0].normal_stiffness': expected a positive number"},
+      {"[[contact_laws]]\nmaterials = [\"hard\", \"hard\"]\nlaw = \"frictionless\"\nnormal_stiffness = 1000.0", "", "no contact law for materials 'hard' and 'hard'"},
+      {"law = \"coulomb\"", "law = \"sticky\"", "key 'contact_laws[0].law': expected one of"},
+      {"node_spacing = 0.15", "node_spacing = [1]", "key 'discretization.node_spacing': expected a number"},
+  };
+  for (const Case& c : cases) {
+    const std::string what = error_of(replace(kValid, c.from, c.to));
+    EXPECT_NE(what.find(c.expected), std::string::npos) << "got: " << what;
+    EXPECT_NE(what.find("bad.toml"), std::string::npos) << "got: " << what;
+  }
+  EXPECT_NE(error_of("name = [").find("TOML syntax error"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace sg
