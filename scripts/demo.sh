@@ -5,4 +5,4 @@ cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)" --target softgrain
-./build/app/softgrain run examples/free-grains.toml
+./build/app/softgrain run examples/shear-cell-small.toml

@@ -10,12 +10,12 @@ namespace sg {
 
 namespace {
 
-ContourView contour_view(const Model& model, const Body& body, const std::vector<Vec2>& positions) {
+ContourView contour_view(const Body& body, const std::vector<Vec2>& positions) {
   ContourView view;
   view.points = std::span<const Vec2>(positions.data() + body.contour_begin,
                                       static_cast<std::size_t>(body.contour_count()));
   view.closed = true;
-  if (body.open_contour) view.closing_shift = Vec2(model.x_max - model.x_min, 0.0);
+  if (body.open_contour) view.closing_shift = Vec2(body.closing_shift_x, 0.0);
   return view;
 }
 
@@ -61,7 +61,7 @@ void ContactSystem::update_geometry(const Model& model) {
   // a body's segments are [contour_begin, contour_end), like its points).
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
     const Body& body = model.bodies[b];
-    const ContourView view = contour_view(model, body, positions_);
+    const ContourView view = contour_view(body, positions_);
     for (int s = 0; s < body.contour_count(); ++s) {
       const auto k = static_cast<std::size_t>(body.contour_begin + s);
       segment_start_[k] = view.segment_start(s);
@@ -130,7 +130,7 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model) {
                                   segment_end_[static_cast<std::size_t>(first.segment)]);
       node.x() += shift;
     }
-    const ContourView view = contour_view(model, master_body, positions_);
+    const ContourView view = contour_view(master_body, positions_);
     int local[64];
     int local_count = 0;
     for (std::size_t c = group.begin; c < group.end && local_count < 64; ++c)
@@ -147,7 +147,7 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model) {
     const int seg = master_body.contour_begin + proj.segment;
     // Slip increment: relative tangential motion of the node and its projection since the
     // previous evaluation (previous positions shifted by the same image).
-    const ContourView old_view = contour_view(model, master_body, previous_positions_);
+    const ContourView old_view = contour_view(master_body, previous_positions_);
     Vec2 node_old = previous_positions_[static_cast<std::size_t>(slave)];
     node_old.x() += shift;
     // If the node or the body wrapped across the seam between evaluations, the displacement
@@ -156,9 +156,17 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model) {
       const double dx = (node.x() - node_old.x());
       node_old.x() += period * std::round(dx / period);
     }
-    const double ds = tangential_slip_increment(
-        node_old, old_view.segment_start(proj.segment), old_view.segment_end(proj.segment), node,
-        view.segment_start(proj.segment), view.segment_end(proj.segment), proj.t);
+    // The master may have wrapped across the seam too: bring its old segment next to the new one.
+    Vec2 old_start = old_view.segment_start(proj.segment), old_end = old_view.segment_end(proj.segment);
+    if (model.periodic_x) {
+      const double wrap =
+          period * std::round((view.segment_start(proj.segment).x() - old_start.x()) / period);
+      old_start.x() += wrap;
+      old_end.x() += wrap;
+    }
+    const double ds = tangential_slip_increment(node_old, old_start, old_end, node,
+                                                view.segment_start(proj.segment),
+                                                view.segment_end(proj.segment), proj.t);
     const ContactLawParams& law = per_pass_laws_.at(
         model.bodies[static_cast<std::size_t>(slave_body)].material, master_body.material);
     const ContactTraction tr = evaluate_contact_law(law, proj.gap, h.active ? ds : 0.0, h);

@@ -113,6 +113,13 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
   series << std::setprecision(12);
   PvdCollection pvd(dir / "fields.pvd");
 
+  // Shear cells: the friction coefficient seen by the top first body over the second half of
+  // the run, mu = mean tangential / mean normal force (the full analysis: softgrain analyze).
+  BodyId top_body = -1;
+  for (BodyId b : driven)
+    if (model.bodies[static_cast<std::size_t>(b)].name == "top") top_body = b;
+  Vec2 top_force_sum = Vec2::Zero();
+  long top_force_rows = 0;
   ExplicitSolver solver(model, contacts.get());
   if (contacts) std::filesystem::create_directories(dir / "contacts");
   std::filesystem::create_directories(dir / "grains");
@@ -147,6 +154,11 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
       series << t << ',' << s << ',' << dt << ',' << e.kinetic << ',' << e.elastic << ','
              << e.external_work << ',' << e.damping_dissipated << ','
              << e.contact_dissipated << ',' << e.residual();
+      if (top_body >= 0 && t >= 0.5 * scenario.duration) {
+        const auto r = static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(top_body)].rigid_index);
+        top_force_sum += Vec2(model.rigid.fx[r], model.rigid.fy[r]);
+        ++top_force_rows;
+      }
       for (BodyId b : driven) {
         const auto r = static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index);
         series << ',' << model.rigid.fx[r] << ',' << model.rigid.fy[r] << ',' << model.rigid.x[r]
@@ -186,7 +198,13 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
                       << format_duration(summary.wall_seconds) << "; outputs in " << dir.string()
                       << "\n  energy: kinetic " << e.kinetic << ", elastic " << e.elastic
                       << ", external work " << e.external_work << ", damping dissipated "
-                      << e.damping_dissipated << ", balance residual " << e.residual() << "\n";
+                      << e.damping_dissipated << ", contact dissipated " << e.contact_dissipated
+                      << ", balance residual " << e.residual() << "\n";
+    if (top_body >= 0 && top_force_sum.y() != 0.0)
+      *options.progress << "  friction coefficient on the top body over t > " << 0.5 * scenario.duration
+                        << ": mu = -<Fx>/<Fy> = " << -top_force_sum.x() / top_force_sum.y()
+                        << " (mean normal force " << std::abs(top_force_sum.y()) / static_cast<double>(top_force_rows)
+                        << ")\n";
   }
   return summary;
 }

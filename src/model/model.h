@@ -43,6 +43,7 @@ struct Body {
   // Open contour: a strip spanning the periodic cell in x (first body), whose last point
   // connects to its first point shifted by one period. Closed otherwise.
   bool open_contour = false;
+  double closing_shift_x = 0.0;  // open contours: the last point joins the first + (this, 0)
   int rigid_index = -1;  // index into Model::rigid (rigid bodies)
   double reference_area = 0.0;
 
@@ -128,8 +129,13 @@ struct Model {
   // A rigid body with the given contour (CCW, simple; closed, or open for a periodic strip
   // whose ends meet across the seam: then the area, centroid and inertia are those of the
   // region between the contour and its closing). Mass and inertia from density.
-  BodyId add_rigid_body(const std::string& name, const Polygon& contour, MaterialId material,
-                        bool open_contour = false);
+  BodyId add_rigid_body(const std::string& name, const Polygon& contour, MaterialId material);
+  // A rigid periodic strip (first body): `surface` is its contact surface only, with the
+  // body's material on the left of the direction of travel; the last point joins the first
+  // shifted by (closing_shift_x, 0) = (+-period, 0). Mass and inertia are given (strips are
+  // normally driven), its reference point is the mean of the surface points.
+  BodyId add_rigid_strip(const std::string& name, const Polygon& surface, MaterialId material,
+                         double closing_shift_x, double mass, double inertia);
 
   std::size_t node_count() const { return nodes.size(); }
   std::size_t contour_point_count() const { return contour_body.size(); }

@@ -27,10 +27,10 @@ MaterialDef read_material(const TomlReader& t) {
   return m;
 }
 
-GrainDef read_grain(const TomlReader& t, std::size_t index) {
+GrainSpec read_grain(const TomlReader& t, std::size_t index) {
   t.reject_unknown_keys({"name", "shape", "center", "radius", "semi_axes", "angle", "material",
                          "velocity", "spin", "stretch", "rigid"});
-  GrainDef g;
+  GrainSpec g;
   g.name = t.string("name", "grain_" + std::to_string(index));
   g.shape = t.one_of("shape", {"disc", "ellipse"}, "disc") == "disc" ? GrainShape::disc
                                                                       : GrainShape::ellipse;
@@ -100,7 +100,8 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
   const TomlDocument document(file);
   const TomlReader root = document.root();
   root.reject_unknown_keys({"name", "time", "output", "discretization", "physics", "materials",
-                            "grains", "walls", "contact_laws", "contact", "periodic"});
+                            "grains", "walls", "contact_laws", "contact", "periodic",
+                            "shear_cell"});
   ScenarioDef s;
   s.source = file;
   s.name = root.string("name", file.stem().string());
@@ -147,8 +148,37 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
       t.fail("name", "material '" + s.materials.back().name + "' is defined twice");
   }
   if (s.materials.empty()) root.fail("materials", "at least one [[materials]] table is required");
+  if (auto t = root.table("shear_cell")) {
+    t->reject_unknown_keys({"length", "grains", "diameter", "grain_material",
+                            "first_body_material", "roughness_rms", "hurst",
+                            "first_body_thickness", "gap", "compaction_time", "velocity", "seed"});
+    ShearCellDef c;
+    c.length = t->positive("length", c.length);
+    c.grains = static_cast<int>(t->integer("grains", c.grains));
+    if (c.grains < 1) t->fail("grains", "expected a positive integer");
+    const Vec2 d = t->vec2("diameter", Vec2(0.85, 1.15));
+    if (!(d.x() > 0 && d.y() >= d.x())) t->fail("diameter", "expected [min, max] with 0 < min <= max");
+    c.diameter.min = d.x();
+    c.diameter.max = d.y();
+    c.grain_material = t->string("grain_material");
+    c.first_body_material = t->string("first_body_material");
+    for (const char* key : {"grain_material", "first_body_material"})
+      if (!material_names.count(t->string(key))) t->fail(key, "unknown material '" + t->string(key) + "'");
+    c.roughness_rms = t->non_negative("roughness_rms", c.roughness_rms);
+    c.hurst = t->number("hurst", c.hurst);
+    if (!(c.hurst > 0 && c.hurst < 1)) t->fail("hurst", "expected a number in (0, 1)");
+    c.first_body_thickness = t->positive("first_body_thickness", c.first_body_thickness);
+    c.gap = t->non_negative("gap", 0.0);
+    c.compaction_time = t->positive("compaction_time", c.compaction_time);
+    c.velocity = t->number("velocity", c.velocity);
+    const long seed = t->integer("seed", 1);
+    if (seed < 0) t->fail("seed", "expected an integer >= 0");
+    c.seed = static_cast<std::uint64_t>(seed);
+    s.shear_cell = c;
+  }
   const std::vector<TomlReader> grains = root.array_of_tables("grains");
-  if (grains.empty()) root.fail("grains", "at least one [[grains]] table is required");
+  if (grains.empty() && !s.shear_cell)
+    root.fail("grains", "at least one [[grains]] table (or a [shear_cell]) is required");
   std::set<std::string> grain_names;
   for (std::size_t i = 0; i < grains.size(); ++i) {
     s.grains.push_back(read_grain(grains[i], i));
@@ -193,8 +223,12 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
   if (!s.contact_laws.empty()) {
     // Every pair of materials in use needs a law: checked here, with the file, not mid-run.
     std::set<std::string> used;
-    for (const GrainDef& g : s.grains) used.insert(g.material);
+    for (const GrainSpec& g : s.grains) used.insert(g.material);
     for (const WallDef& w : s.walls) used.insert(w.material);
+    if (s.shear_cell) {
+      used.insert(s.shear_cell->grain_material);
+      used.insert(s.shear_cell->first_body_material);
+    }
     try {
       MaterialPairTable table = contact_law_table(s);
       std::vector<int> ids;
@@ -236,7 +270,7 @@ Model build_model(const ScenarioDef& scenario) {
   model.periodic_x = scenario.periodic_x;
   model.x_min = scenario.x_min;
   model.x_max = scenario.x_max;
-  for (const GrainDef& g : scenario.grains) {
+  for (const GrainSpec& g : scenario.grains) {
     const Polygon contour = g.shape == GrainShape::disc
                                 ? make_disc(g.center, g.radius, h)
                                 : make_ellipse(g.center, g.semi_axes.x(), g.semi_axes.y(), g.angle, h);
@@ -253,6 +287,9 @@ Model build_model(const ScenarioDef& scenario) {
     if (g.stretch != Vec2(1.0, 1.0)) set_affine_deformation(model, b, g.stretch.asDiagonal());
     set_rigid_velocity(model, b, g.velocity, g.spin);
   }
+  if (scenario.shear_cell)
+    add_shear_cell(model, *scenario.shear_cell, material_id(scenario.shear_cell->grain_material),
+                   material_id(scenario.shear_cell->first_body_material), scenario.discretization);
   for (const WallDef& w : scenario.walls) {
     const BodyId b = model.add_rigid_body(w.name, make_rectangle(w.lower_left, w.upper_right, h),
                                           material_id(w.material));

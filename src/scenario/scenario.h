@@ -10,12 +10,15 @@
 #include "material/material.h"
 #include "meshfree/body_discretization.h"
 #include "model/model.h"
+#include "scenario/shear_cell.h"
+
+#include <optional>
 
 namespace sg {
 
 enum class GrainShape { disc, ellipse };
 
-struct GrainDef {
+struct GrainSpec {
   std::string name;
   GrainShape shape = GrainShape::disc;
   Vec2 center = Vec2::Zero();        // length
@@ -58,12 +61,14 @@ struct ScenarioDef {
   // [physics]
   Vec2 gravity = Vec2::Zero();
   std::vector<MaterialDef> materials;
-  std::vector<GrainDef> grains;
+  std::vector<GrainSpec> grains;
   std::vector<WallDef> walls;
   // [[contact_laws]] and [contact]: no laws, no contacts.
   std::vector<ContactLawDef> contact_laws;
   double contact_cutoff = 0.0;  // 0: a quarter of the node spacing, at least the cohesive reach
   double contact_skin = 0.0;    // 0: equal to the cutoff
+  // [shear_cell]: the third-body cell builder (periodic over [0, length)).
+  std::optional<ShearCellDef> shear_cell;
   // [periodic]: periodic in x over [x_min, x_max) when set.
   bool periodic_x = false;
   double x_min = 0.0, x_max = 0.0;

@@ -122,23 +122,17 @@ std::pair<double, double> ExplicitSolver::advance_rigid_bodies(double dt) {
     const double gravity[3] = {r.mass[i] * model_.gravity.x(), r.mass[i] * model_.gravity.y(), 0.0};
     for (int d = 0; d < 3; ++d) {
       const double v_old = *velocity[d];
-      double external = gravity[d];  // forces from outside the granular system
-      switch (drive.mode[d]) {
-        case DriveMode::free:
-          break;
-        case DriveMode::force:
-          external += drive.force[d];
-          break;
-        case DriveMode::velocity: {
-          // The driver supplies whatever force keeps the imposed velocity:
-          // m (v_new - v_old) / dt = received + external  =>  external = m dv/dt - received.
-          const double v_new = drive.velocity[d](t_mid);
-          external = inertia[d] * (v_new - v_old) / dt - received[d];
-          break;
-        }
+      if (drive.mode[d] == DriveMode::velocity) {
+        // A velocity-driven degree of freedom is part of the driver, not of the system: its
+        // kinetic energy is not counted, and the work it does on the system is that of the
+        // forces it exerts through the contacts, -received . v.
+        *velocity[d] = drive.velocity[d](t_mid);
+        *position[d] += dt * *velocity[d];
+        power -= received[d] * *velocity[d];
+        continue;
       }
+      const double external = gravity[d] + (drive.mode[d] == DriveMode::force ? drive.force[d] : 0.0);
       *velocity[d] = v_old + dt * (received[d] + external) / inertia[d];
-      if (drive.mode[d] == DriveMode::velocity) *velocity[d] = drive.velocity[d](t_mid);
       *position[d] += dt * *velocity[d];
       kinetic += 0.5 * inertia[d] * v_old * *velocity[d];
       power += external * *velocity[d];
@@ -151,7 +145,6 @@ void ExplicitSolver::wrap_periodic_bodies() {
   const double period = model_.x_max - model_.x_min;
   NodeState& n = model_.nodes;
   for (const Body& body : model_.bodies) {
-    if (body.open_contour) continue;  // strips span the cell
     double shift = 0.0;
     if (body.kind == BodyKind::rigid) {
       double& x = model_.rigid.x[static_cast<std::size_t>(body.rigid_index)];

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "io/run.h"
+#include "model/model.h"
 #include "scenario/scenario.h"
 
 namespace sg {
@@ -108,9 +109,39 @@ TEST(Scenario, ValidFileRunsToACompleteFolder) {
 }
 
 TEST(Scenario, ExamplesLoad) {
-  for (const char* name : {"free-grains.toml", "mixed-box.toml"}) {
+  for (const char* name : {"free-grains.toml", "mixed-box.toml", "shear-cell-small.toml"}) {
     const ScenarioDef s = load_scenario(fs::path(SOFTGRAIN_SOURCE_DIR) / "examples" / name);
-    EXPECT_FALSE(s.grains.empty()) << name;
+    EXPECT_TRUE(!s.grains.empty() || s.shear_cell) << name;
+  }
+}
+
+TEST(Scenario, ShearCellBuildsTwoDrivenFirstBodiesAndTheGrains) {
+  const ScenarioDef s =
+      load_scenario(fs::path(SOFTGRAIN_SOURCE_DIR) / "examples" / "shear-cell-small.toml");
+  ASSERT_TRUE(s.shear_cell);
+  const Model model = build_model(s);
+  EXPECT_TRUE(model.periodic_x);
+  EXPECT_EQ(model.x_max - model.x_min, s.shear_cell->length);
+  ASSERT_EQ(model.bodies.size(), static_cast<std::size_t>(s.shear_cell->grains + 2));
+  EXPECT_EQ(model.bodies[0].name, "bottom");
+  EXPECT_EQ(model.bodies[1].name, "top");
+  for (int b : {0, 1}) {
+    const RigidDrive& d = model.rigid.drive[static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index)];
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(d.mode[k], DriveMode::velocity);
+    // After the compaction: +V/2 for the top, -V/2 for the bottom; no vertical motion.
+    const double late = 2.0 * s.shear_cell->compaction_time;
+    EXPECT_DOUBLE_EQ(d.velocity[0](late), (b == 1 ? 0.5 : -0.5) * s.shear_cell->velocity);
+    EXPECT_DOUBLE_EQ(d.velocity[1](late), 0.0);
+  }
+  // The top surface lies above every grain, the bottom one below.
+  double top_min = 1e300, bottom_max = -1e300;
+  for (int k = model.bodies[1].contour_begin; k < model.bodies[1].contour_end; ++k)
+    top_min = std::min(top_min, model.rigid.y[1] + model.rigid_contour_offset[static_cast<std::size_t>(k)].y());
+  for (int k = model.bodies[0].contour_begin; k < model.bodies[0].contour_end; ++k)
+    bottom_max = std::max(bottom_max, model.rigid.y[0] + model.rigid_contour_offset[static_cast<std::size_t>(k)].y());
+  for (std::size_t i = 0; i < model.node_count(); ++i) {
+    EXPECT_LT(model.nodes.ref_y[i], top_min);
+    EXPECT_GT(model.nodes.ref_y[i], bottom_max);
   }
 }
 
