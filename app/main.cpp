@@ -23,7 +23,8 @@ void apply_threads(const GlobalOptions& options) {
 
 int main(int argc, char** argv) {
   using namespace sg::app;
-  CLI::App app{"softgrain: 2D simulation of rigid and highly deformable grains (multibody meshfree)"};
+  CLI::App app{
+      "softgrain: 2D simulation of rigid and highly deformable grains (multibody meshfree)"};
   app.footer(
       "Examples:\n"
       "  softgrain run examples/free-grains.toml            simulate; outputs in out/<name>/\n"

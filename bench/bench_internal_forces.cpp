@@ -24,13 +24,15 @@ Model disc_set(int discs) {
   m.damping = 0.02;
   DiscretizationParams p;
   p.mesh.spacing = 0.1;  // 117 field nodes per disc of radius 0.5 (the papers: 100-150)
-  const BodyDiscretization disc = discretize_body(make_disc(Vec2(0, 0), 0.5, p.mesh.spacing), p, "disc");
+  const BodyDiscretization disc =
+      discretize_body(make_disc(Vec2(0, 0), 0.5, p.mesh.spacing), p, "disc");
   Model model;
   const MaterialId id = model.add_material(m);
   const int side = static_cast<int>(std::ceil(std::sqrt(discs)));
   for (int k = 0; k < discs; ++k) {
     BodyDiscretization shifted = disc;
-    for (Vec2& x : shifted.mesh.nodes) x += Vec2(1.1 * (k % side), 1.1 * (k / side));
+    for (Vec2& x : shifted.mesh.nodes)
+      x += Vec2(1.1 * (k % side), 1.1 * (k / side));
     const BodyId b = model.add_deformable_body("d" + std::to_string(k), shifted, id);
     Mat2 f = Mat2::Identity();
     f(0, 0) = 1.0 + 0.01 * (k % 7);
@@ -51,7 +53,8 @@ void InternalForces(benchmark::State& state) {
     solver.step(dt);
     benchmark::ClobberMemory();
   }
-  const double node_steps = static_cast<double>(model.node_count()) * static_cast<double>(state.iterations());
+  const double node_steps =
+      static_cast<double>(model.node_count()) * static_cast<double>(state.iterations());
   state.counters["nodes"] = static_cast<double>(model.node_count());
   state.counters["gauss_points"] = static_cast<double>(model.gauss_point_count());
   state.counters["node_steps_per_s"] = benchmark::Counter(node_steps, benchmark::Counter::kIsRate);

@@ -33,18 +33,19 @@ int info(const std::string& file) {
   return 0;
 }
 
-const Registration registration({"info",
-                                 [](CLI::App& app, const GlobalOptions& options) {
-                                   auto file = std::make_shared<std::string>();
-                                   CLI::App* sub = app.add_subcommand(
-                                       "info", "Build the model and print its size and stable step");
-                                   sub->add_option("scenario", *file, "scenario TOML file")->required();
-                                   return std::function<int()>([file, &options] {
-                                     apply_threads(options);
-                                     return info(*file);
-                                   });
-                                 },
-                                 20});
+const Registration registration(
+    {"info",
+     [](CLI::App& app, const GlobalOptions& options) {
+       auto file = std::make_shared<std::string>();
+       CLI::App* sub =
+           app.add_subcommand("info", "Build the model and print its size and stable step");
+       sub->add_option("scenario", *file, "scenario TOML file")->required();
+       return std::function<int()>([file, &options] {
+         apply_threads(options);
+         return info(*file);
+       });
+     },
+     20});
 
 }  // namespace
 }  // namespace sg::app

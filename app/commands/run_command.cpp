@@ -12,32 +12,30 @@ struct RunArguments {
   std::string output;
 };
 
-const Registration registration({"run",
-                                 [](CLI::App& app, const GlobalOptions& options) {
-                                   auto args = std::make_shared<RunArguments>();
-                                   CLI::App* run = app.add_subcommand(
-                                       "run", "Simulate a scenario; writes series.csv, fields/, run.log");
-                                   run->add_option("scenario", args->scenario, "scenario TOML file")
-                                       ->required();
-                                   run->add_option("-o,--output", args->output,
-                                                   "output root folder (overrides [output] directory)");
-                                   return std::function<int()>([args, &options] {
-                                     apply_threads(options);
-                                     const ScenarioDef scenario = load_scenario(args->scenario);
-                                     RunOptions run_options;
-                                     run_options.progress = &std::cerr;
-                                     run_options.output_root_override = args->output;
-                                     const RunSummary summary = run_scenario(scenario, run_options);
-                                     std::cout << "run '" << scenario.name << "': " << summary.steps
-                                               << " steps of " << summary.time_step << ", "
-                                               << summary.nodes << " nodes, "
-                                               << summary.node_steps_per_second / 1e6
-                                               << " M node-steps/s -> "
-                                               << summary.directory.string() << "\n";
-                                     return 0;
-                                   });
-                                 },
-                                 10});
+const Registration registration(
+    {"run",
+     [](CLI::App& app, const GlobalOptions& options) {
+       auto args = std::make_shared<RunArguments>();
+       CLI::App* run =
+           app.add_subcommand("run", "Simulate a scenario; writes series.csv, fields/, run.log");
+       run->add_option("scenario", args->scenario, "scenario TOML file")->required();
+       run->add_option("-o,--output", args->output,
+                       "output root folder (overrides [output] directory)");
+       return std::function<int()>([args, &options] {
+         apply_threads(options);
+         const ScenarioDef scenario = load_scenario(args->scenario);
+         RunOptions run_options;
+         run_options.progress = &std::cerr;
+         run_options.output_root_override = args->output;
+         const RunSummary summary = run_scenario(scenario, run_options);
+         std::cout << "run '" << scenario.name << "': " << summary.steps << " steps of "
+                   << summary.time_step << ", " << summary.nodes << " nodes, "
+                   << summary.node_steps_per_second / 1e6 << " M node-steps/s -> "
+                   << summary.directory.string() << "\n";
+         return 0;
+       });
+     },
+     10});
 
 }  // namespace
 }  // namespace sg::app

@@ -157,7 +157,8 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model) {
       node_old.x() += period * std::round(dx / period);
     }
     // The master may have wrapped across the seam too: bring its old segment next to the new one.
-    Vec2 old_start = old_view.segment_start(proj.segment), old_end = old_view.segment_end(proj.segment);
+    Vec2 old_start = old_view.segment_start(proj.segment),
+         old_end = old_view.segment_end(proj.segment);
     if (model.periodic_x) {
       const double wrap =
           period * std::round((view.segment_start(proj.segment).x() - old_start.x()) / period);

@@ -25,25 +25,25 @@ class Error : public std::runtime_error {
 
 }  // namespace sg
 
-#define SG_THROW(msg)                                                   \
-  do {                                                                  \
-    std::ostringstream sg_throw_stream_;                                \
-    sg_throw_stream_ << msg;                                            \
+#define SG_THROW(msg)                                                     \
+  do {                                                                    \
+    std::ostringstream sg_throw_stream_;                                  \
+    sg_throw_stream_ << msg;                                              \
     ::sg::throw_error(sg_throw_stream_.str(), __FILE__, __LINE__, false); \
   } while (0)
 
-#define SG_VERIFY(cond, msg)   \
-  do {                         \
+#define SG_VERIFY(cond, msg)    \
+  do {                          \
     if (!(cond)) SG_THROW(msg); \
   } while (0)
 
-#define SG_INTERNAL_CHECK(cond, msg)                                                      \
-  do {                                                                                    \
-    if (!(cond)) {                                                                        \
-      std::ostringstream sg_check_stream_;                                                \
-      sg_check_stream_ << "internal check failed: " #cond ": " << msg;                    \
-      ::sg::throw_error(sg_check_stream_.str(), __FILE__, __LINE__, true);                \
-    }                                                                                     \
+#define SG_INTERNAL_CHECK(cond, msg)                                       \
+  do {                                                                     \
+    if (!(cond)) {                                                         \
+      std::ostringstream sg_check_stream_;                                 \
+      sg_check_stream_ << "internal check failed: " #cond ": " << msg;     \
+      ::sg::throw_error(sg_check_stream_.str(), __FILE__, __LINE__, true); \
+    }                                                                      \
   } while (0)
 
 #ifndef NDEBUG

@@ -36,7 +36,8 @@ PointGrid::PointGrid(std::span<const Vec2> points, double cell_size)
     cell_of[i] = cell_y(points_[i].y()) * nx_ + cell_x(points_[i].x());
     ++count[static_cast<std::size_t>(cell_of[i]) + 1];
   }
-  for (std::size_t c = 0; c < cells; ++c) count[c + 1] += count[c];
+  for (std::size_t c = 0; c < cells; ++c)
+    count[c + 1] += count[c];
   cell_start_ = count;
   order_.resize(points_.size());
   std::vector<int> fill(count.begin(), count.end() - 1);
@@ -68,7 +69,8 @@ void PointGrid::for_each_within(const Vec2& center, double radius,
       }
     }
   std::sort(found.begin(), found.end());
-  for (int i : found) visit(i);
+  for (int i : found)
+    visit(i);
 }
 
 double PointGrid::kth_neighbour_distance(int i, int k) const {

@@ -30,7 +30,8 @@ class PointGrid {
   Vec2 origin_;
   double cell_size_;
   int nx_ = 1, ny_ = 1;
-  std::vector<int> cell_start_;  // CSR: points of cell c are order_[cell_start_[c] .. cell_start_[c+1])
+  std::vector<int>
+      cell_start_;  // CSR: points of cell c are order_[cell_start_[c] .. cell_start_[c+1])
   std::vector<int> order_;
   int cell_x(double x) const;
   int cell_y(double y) const;

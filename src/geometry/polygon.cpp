@@ -9,18 +9,22 @@
 namespace sg {
 
 namespace {
-const Vec2& next_vertex(const Polygon& p, std::size_t i) { return p[(i + 1) % p.size()]; }
+const Vec2& next_vertex(const Polygon& p, std::size_t i) {
+  return p[(i + 1) % p.size()];
+}
 }  // namespace
 
 double signed_area(const Polygon& p) {
   double twice_area = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) twice_area += cross(p[i], next_vertex(p, i));
+  for (std::size_t i = 0; i < p.size(); ++i)
+    twice_area += cross(p[i], next_vertex(p, i));
   return 0.5 * twice_area;
 }
 
 double perimeter(const Polygon& p) {
   double length = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) length += (next_vertex(p, i) - p[i]).norm();
+  for (std::size_t i = 0; i < p.size(); ++i)
+    length += (next_vertex(p, i) - p[i]).norm();
   return length;
 }
 
@@ -50,7 +54,9 @@ double polar_second_moment(const Polygon& p) {
   return twice_moment / 12.0;
 }
 
-bool is_counter_clockwise(const Polygon& p) { return signed_area(p) > 0.0; }
+bool is_counter_clockwise(const Polygon& p) {
+  return signed_area(p) > 0.0;
+}
 
 bool contains(const Polygon& p, const Vec2& point) {
   bool inside = false;

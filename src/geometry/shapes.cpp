@@ -17,8 +17,8 @@ Polygon make_ellipse(const Vec2& center, double a, double b, double angle, doubl
   SG_VERIFY(spacing > 0.0, "contour spacing must be positive, got " << spacing);
   // A fine polygon first, then uniform resampling by arc length: parametric angles are
   // not uniform in arc length for an elongated ellipse.
-  const int fine = std::max(64, static_cast<int>(32.0 * 2.0 * std::numbers::pi * std::max(a, b) /
-                                                 spacing));
+  const int fine =
+      std::max(64, static_cast<int>(32.0 * 2.0 * std::numbers::pi * std::max(a, b) / spacing));
   Polygon dense;
   dense.reserve(static_cast<std::size_t>(fine));
   for (int k = 0; k < fine; ++k) {
@@ -44,7 +44,8 @@ Polygon make_rectangle(const Vec2& lower_left, const Vec2& upper_right, double s
   for (int c = 0; c < 4; ++c) {
     const Vec2 a = corners[c], b = corners[(c + 1) % 4];
     const int n = std::max(1, static_cast<int>(std::lround((b - a).norm() / spacing)));
-    for (int k = 0; k < n; ++k) out.push_back(a + (b - a) * (static_cast<double>(k) / n));
+    for (int k = 0; k < n; ++k)
+      out.push_back(a + (b - a) * (static_cast<double>(k) / n));
   }
   return out;
 }

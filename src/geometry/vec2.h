@@ -12,10 +12,14 @@ using Vec2 = Eigen::Vector2d;
 using Mat2 = Eigen::Matrix2d;
 
 // z-component of the 3D cross product of two in-plane vectors.
-inline double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+inline double cross(const Vec2& a, const Vec2& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
 
 // The vector rotated by +90 degrees.
-inline Vec2 perp(const Vec2& a) { return Vec2(-a.y(), a.x()); }
+inline Vec2 perp(const Vec2& a) {
+  return Vec2(-a.y(), a.x());
+}
 
 inline Mat2 rotation(double angle) {
   Mat2 r;

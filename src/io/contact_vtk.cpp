@@ -17,16 +17,20 @@ void write_contact_snapshot(const ContactSystem& contacts, const std::filesystem
         << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << n << "\">\n"
         << "      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" "
            "format=\"ascii\">\n";
-    for (const ContactRecord& r : records) out << r.position.x() << ' ' << r.position.y() << " 0\n";
+    for (const ContactRecord& r : records)
+      out << r.position.x() << ' ' << r.position.y() << " 0\n";
     out << "        </DataArray>\n      </Points>\n      <Cells>\n"
            "        <DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n";
-    for (std::size_t i = 0; i < n; ++i) out << i << '\n';
+    for (std::size_t i = 0; i < n; ++i)
+      out << i << '\n';
     out << "        </DataArray>\n        <DataArray type=\"Int32\" Name=\"offsets\" "
            "format=\"ascii\">\n";
-    for (std::size_t i = 0; i < n; ++i) out << i + 1 << '\n';
+    for (std::size_t i = 0; i < n; ++i)
+      out << i + 1 << '\n';
     out << "        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" "
            "format=\"ascii\">\n";
-    for (std::size_t i = 0; i < n; ++i) out << "1\n";  // VTK_VERTEX
+    for (std::size_t i = 0; i < n; ++i)
+      out << "1\n";  // VTK_VERTEX
     out << "        </DataArray>\n      </Cells>\n      <PointData Vectors=\"force\">\n";
     auto vectors = [&](const char* name, auto&& get) {
       out << "        <DataArray type=\"Float64\" Name=\"" << name
@@ -38,15 +42,18 @@ void write_contact_snapshot(const ContactSystem& contacts, const std::filesystem
       out << "        </DataArray>\n";
     };
     auto scalars = [&](const char* name, const char* type, auto&& get) {
-      out << "        <DataArray type=\"" << type << "\" Name=\"" << name << "\" format=\"ascii\">\n";
-      for (const ContactRecord& r : records) out << get(r) << '\n';
+      out << "        <DataArray type=\"" << type << "\" Name=\"" << name
+          << "\" format=\"ascii\">\n";
+      for (const ContactRecord& r : records)
+        out << get(r) << '\n';
       out << "        </DataArray>\n";
     };
     vectors("normal", [](const ContactRecord& r) { return r.normal; });
     vectors("force", [](const ContactRecord& r) -> Vec2 {
       return r.length * (r.traction.normal * r.normal + r.traction.tangential * perp(r.normal));
     });
-    scalars("normal_force", "Float64", [](const ContactRecord& r) { return r.length * r.traction.normal; });
+    scalars("normal_force", "Float64",
+            [](const ContactRecord& r) { return r.length * r.traction.normal; });
     scalars("tangential_force", "Float64",
             [](const ContactRecord& r) { return r.length * r.traction.tangential; });
     scalars("gap", "Float64", [](const ContactRecord& r) { return r.gap; });

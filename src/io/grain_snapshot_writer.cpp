@@ -32,9 +32,11 @@ void write_grain_snapshot(const Model& model, const std::filesystem::path& path)
         x /= m;
         v /= m;
       }
-      const Polygon current(contour.begin() + body.contour_begin, contour.begin() + body.contour_end);
+      const Polygon current(contour.begin() + body.contour_begin,
+                            contour.begin() + body.contour_end);
       const double area = body.open_contour ? body.reference_area : signed_area(current);
-      out << b << ',' << x.x() << ',' << x.y() << ',' << v.x() << ',' << v.y() << ',' << area << '\n';
+      out << b << ',' << x.x() << ',' << x.y() << ',' << v.x() << ',' << v.y() << ',' << area
+          << '\n';
     }
   });
 }

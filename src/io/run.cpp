@@ -3,10 +3,10 @@
 #include <omp.h>
 
 #include <chrono>
-#include <memory>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <memory>
 #include <sstream>
 
 #include "core/error.h"
@@ -29,8 +29,9 @@ void write_run_log(const std::filesystem::path& path, const ScenarioDef& s, cons
         << "\nthreads = " << omp_get_max_threads() << "\n\n[time]\nduration = " << s.duration
         << "\nsafety = " << s.time_step_safety << "\nfixed_step = " << s.fixed_time_step
         << "\n\n[output]\nseries_period = " << s.series_period
-        << "\nfield_period = " << s.field_period << "\n\n[discretization]\nnode_spacing = "
-        << s.discretization.mesh.spacing << "\nmls_neighbours = " << s.discretization.mls.neighbours
+        << "\nfield_period = " << s.field_period
+        << "\n\n[discretization]\nnode_spacing = " << s.discretization.mesh.spacing
+        << "\nmls_neighbours = " << s.discretization.mls.neighbours
         << "\nmls_support_factor = " << s.discretization.mls.support_factor
         << "\ngauss_points = " << s.discretization.gauss_points
         << "\nsmoothing_iterations = " << s.discretization.mesh.smoothing_iterations
@@ -53,9 +54,13 @@ void write_run_log(const std::filesystem::path& path, const ScenarioDef& s, cons
 
 std::string format_duration(double seconds) {
   std::ostringstream s;
-  if (seconds < 60) s << std::fixed << std::setprecision(0) << seconds << "s";
-  else if (seconds < 3600) s << static_cast<int>(seconds / 60) << "m" << static_cast<int>(std::fmod(seconds, 60)) << "s";
-  else s << static_cast<int>(seconds / 3600) << "h" << static_cast<int>(std::fmod(seconds, 3600) / 60) << "m";
+  if (seconds < 60)
+    s << std::fixed << std::setprecision(0) << seconds << "s";
+  else if (seconds < 3600)
+    s << static_cast<int>(seconds / 60) << "m" << static_cast<int>(std::fmod(seconds, 60)) << "s";
+  else
+    s << static_cast<int>(seconds / 3600) << "h" << static_cast<int>(std::fmod(seconds, 3600) / 60)
+      << "m";
   return s.str();
 }
 
@@ -101,7 +106,8 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
     const Body& body = model.bodies[b];
     if (body.kind != BodyKind::rigid) continue;
     const RigidDrive& d = model.rigid.drive[static_cast<std::size_t>(body.rigid_index)];
-    if (d.mode[0] != DriveMode::free || d.mode[1] != DriveMode::free) driven.push_back(static_cast<BodyId>(b));
+    if (d.mode[0] != DriveMode::free || d.mode[1] != DriveMode::free)
+      driven.push_back(static_cast<BodyId>(b));
   }
   series << "time,step,dt,kinetic_energy,elastic_energy,external_work,damping_dissipation,"
             "contact_dissipation,energy_residual";
@@ -152,15 +158,17 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
     if (t >= next_series - 1e-12 * scenario.duration) {
       const EnergyLedger& e = solver.state().energy;
       series << t << ',' << s << ',' << dt << ',' << e.kinetic << ',' << e.elastic << ','
-             << e.external_work << ',' << e.damping_dissipated << ','
-             << e.contact_dissipated << ',' << e.residual();
+             << e.external_work << ',' << e.damping_dissipated << ',' << e.contact_dissipated << ','
+             << e.residual();
       if (top_body >= 0 && t >= 0.5 * scenario.duration) {
-        const auto r = static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(top_body)].rigid_index);
+        const auto r =
+            static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(top_body)].rigid_index);
         top_force_sum += Vec2(model.rigid.fx[r], model.rigid.fy[r]);
         ++top_force_rows;
       }
       for (BodyId b : driven) {
-        const auto r = static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index);
+        const auto r =
+            static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index);
         series << ',' << model.rigid.fx[r] << ',' << model.rigid.fy[r] << ',' << model.rigid.x[r]
                << ',' << model.rigid.y[r];
       }
@@ -172,8 +180,8 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
       const double elapsed = std::chrono::duration<double>(last_progress - start).count();
       const double rate = static_cast<double>(s + 1) / elapsed;
       std::ostringstream line;
-      line << "\r  t = " << std::setprecision(4) << solver.state().time << " / " << scenario.duration
-           << "  (" << std::fixed << std::setprecision(1)
+      line << "\r  t = " << std::setprecision(4) << solver.state().time << " / "
+           << scenario.duration << "  (" << std::fixed << std::setprecision(1)
            << 100.0 * static_cast<double>(s + 1) / static_cast<double>(total_steps) << "%)  "
            << std::setprecision(0) << rate << " steps/s  ETA "
            << format_duration(static_cast<double>(total_steps - s - 1) / rate) << "   ";
@@ -194,16 +202,19 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
       static_cast<double>(summary.nodes) * static_cast<double>(total_steps) / summary.wall_seconds;
   if (options.progress) {
     const EnergyLedger& e = solver.state().energy;
-    *options.progress << std::defaultfloat << "\r" << std::string(70, ' ') << "\rdone: " << total_steps << " steps in "
+    *options.progress << std::defaultfloat << "\r" << std::string(70, ' ')
+                      << "\rdone: " << total_steps << " steps in "
                       << format_duration(summary.wall_seconds) << "; outputs in " << dir.string()
                       << "\n  energy: kinetic " << e.kinetic << ", elastic " << e.elastic
                       << ", external work " << e.external_work << ", damping dissipated "
                       << e.damping_dissipated << ", contact dissipated " << e.contact_dissipated
                       << ", balance residual " << e.residual() << "\n";
     if (top_body >= 0 && top_force_sum.y() != 0.0)
-      *options.progress << "  friction coefficient on the top body over t > " << 0.5 * scenario.duration
+      *options.progress << "  friction coefficient on the top body over t > "
+                        << 0.5 * scenario.duration
                         << ": mu = -<Fx>/<Fy> = " << -top_force_sum.x() / top_force_sum.y()
-                        << " (mean normal force " << std::abs(top_force_sum.y()) / static_cast<double>(top_force_rows)
+                        << " (mean normal force "
+                        << std::abs(top_force_sum.y()) / static_cast<double>(top_force_rows)
                         << ")\n";
   }
   return summary;

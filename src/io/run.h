@@ -13,7 +13,8 @@ namespace sg {
 
 struct RunOptions {
   std::ostream* progress = nullptr;  // progress line and summary; nullptr: silent
-  std::filesystem::path output_root_override;  // non-empty: replaces the scenario's [output] directory
+  std::filesystem::path
+      output_root_override;  // non-empty: replaces the scenario's [output] directory
 };
 
 struct RunSummary {

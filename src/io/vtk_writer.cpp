@@ -68,7 +68,8 @@ NodalFields evaluate_fields(const Model& model) {
 template <typename Get>
 void scalar_array(std::ostream& out, const char* name, std::size_t n, Get&& get) {
   out << "        <DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
-  for (std::size_t i = 0; i < n; ++i) out << get(i) << (i % 8 == 7 ? '\n' : ' ');
+  for (std::size_t i = 0; i < n; ++i)
+    out << get(i) << (i % 8 == 7 ? '\n' : ' ');
   out << "\n        </DataArray>\n";
 }
 
@@ -92,7 +93,8 @@ void write_vtu_snapshot(const Model& model, const std::filesystem::path& path) {
   for (const Body& body : model.bodies) {
     if (body.kind != BodyKind::rigid) continue;
     std::vector<std::size_t> poly;
-    for (int k = 0; k < body.contour_count(); ++k) poly.push_back(next_point++);
+    for (int k = 0; k < body.contour_count(); ++k)
+      poly.push_back(next_point++);
     polygons.push_back(std::move(poly));
   }
   const std::size_t cells = model.triangles.size() + polygons.size();
@@ -106,9 +108,11 @@ void write_vtu_snapshot(const Model& model, const std::filesystem::path& path) {
     vector_array(out, "position", f.position);
     out << "      </Points>\n      <Cells>\n"
            "        <DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n";
-    for (const auto& t : model.triangles) out << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+    for (const auto& t : model.triangles)
+      out << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
     for (const auto& poly : polygons) {
-      for (std::size_t p : poly) out << p << ' ';
+      for (std::size_t p : poly)
+        out << p << ' ';
       out << '\n';
     }
     out << "        </DataArray>\n"
@@ -118,12 +122,14 @@ void write_vtu_snapshot(const Model& model, const std::filesystem::path& path) {
       offset += 3;
       out << offset << (c % 16 == 15 ? '\n' : ' ');
     }
-    for (const auto& poly : polygons) out << (offset += poly.size()) << ' ';
+    for (const auto& poly : polygons)
+      out << (offset += poly.size()) << ' ';
     out << "\n        </DataArray>\n"
            "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
     for (std::size_t c = 0; c < model.triangles.size(); ++c)
       out << "5" << (c % 32 == 31 ? '\n' : ' ');  // VTK_TRIANGLE
-    for (std::size_t c = 0; c < polygons.size(); ++c) out << "7 ";  // VTK_POLYGON
+    for (std::size_t c = 0; c < polygons.size(); ++c)
+      out << "7 ";  // VTK_POLYGON
     out << "\n        </DataArray>\n      </Cells>\n"
            "      <PointData Scalars=\"von_mises\" Vectors=\"velocity\">\n";
     vector_array(out, "displacement", f.displacement);

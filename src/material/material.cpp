@@ -8,8 +8,10 @@ namespace sg {
 
 const char* to_string(MaterialLaw law) {
   switch (law) {
-    case MaterialLaw::neo_hookean: return "neo_hookean";
-    case MaterialLaw::saint_venant_kirchhoff: return "saint_venant_kirchhoff";
+    case MaterialLaw::neo_hookean:
+      return "neo_hookean";
+    case MaterialLaw::saint_venant_kirchhoff:
+      return "saint_venant_kirchhoff";
   }
   return "?";
 }

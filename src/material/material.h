@@ -33,8 +33,8 @@ void validate(const MaterialDef& def);
 // Coefficients the kernel uses, derived once from a MaterialDef.
 struct MaterialParams {
   MaterialLaw law = MaterialLaw::neo_hookean;
-  double lambda = 0.0;   // first Lame parameter (plane strain: the 3D one)
-  double mu = 0.0;       // shear modulus
+  double lambda = 0.0;  // first Lame parameter (plane strain: the 3D one)
+  double mu = 0.0;      // shear modulus
   double density = 1.0;
   double damping = 0.0;  // alpha
 };

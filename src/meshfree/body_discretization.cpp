@@ -29,7 +29,8 @@ BodyDiscretization discretize_mesh(DomainMesh mesh, const DiscretizationParams& 
       d.gauss_position.push_back(x);
     }
   }
-  for (const Vec2& x : nodes) mls.evaluate(x, d.node_rows);
+  for (const Vec2& x : nodes)
+    mls.evaluate(x, d.node_rows);
 
   d.lumped_volume.assign(nodes.size(), 0.0);
   for (std::size_t g = 0; g < d.gauss_rows.points(); ++g)

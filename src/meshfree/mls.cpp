@@ -39,7 +39,8 @@ MlsShapeFunctions::MlsShapeFunctions(std::span<const Vec2> nodes, const MlsParam
       params_(params),
       body_name_(std::move(body_name)),
       grid_(nodes, nodes.empty() ? 1.0 : typical_spacing(nodes)) {
-  SG_VERIFY(params.neighbours >= 3, "body '" << body_name_ << "': MLS needs at least 3 neighbours, got "
+  SG_VERIFY(params.neighbours >= 3, "body '" << body_name_
+                                             << "': MLS needs at least 3 neighbours, got "
                                              << params.neighbours);
   SG_VERIFY(params.support_factor >= 1.0, "body '" << body_name_
                                                    << "': MLS support factor must be >= 1, got "
@@ -64,9 +65,9 @@ void MlsShapeFunctions::evaluate(const Vec2& point, ShapeRows& rows) const {
   // Gather the covering nodes with their weights and weight gradients.
   struct Covering {
     int node;
-    Vec3 p;       // shifted, scaled basis at the node
-    double w;     // weight
-    Vec2 dw;      // d w / d x
+    Vec3 p;    // shifted, scaled basis at the node
+    double w;  // weight
+    Vec2 dw;   // d w / d x
   };
   std::vector<Covering> cover;
   cover.reserve(32);
@@ -77,8 +78,8 @@ void MlsShapeFunctions::evaluate(const Vec2& point, ShapeRows& rows) const {
     if (dist >= rho) return;
     const double r = dist / rho;
     const double w = cubic_spline_weight(r);
-    const Vec2 dw = dist > 0.0 ? Vec2(cubic_spline_weight_derivative(r) / (rho * dist) * d)
-                               : Vec2(0.0, 0.0);
+    const Vec2 dw =
+        dist > 0.0 ? Vec2(cubic_spline_weight_derivative(r) / (rho * dist) * d) : Vec2(0.0, 0.0);
     const Vec2 shifted = (nodes_[static_cast<std::size_t>(j)] - point) / basis_scale_;
     cover.push_back({j, Vec3(1.0, shifted.x(), shifted.y()), w, dw});
   });

@@ -12,7 +12,8 @@ void add_orbit(TriangleRule& rule, double a, double weight) {
   rule.barycentric.push_back({a, b, b});
   rule.barycentric.push_back({b, a, b});
   rule.barycentric.push_back({b, b, a});
-  for (int k = 0; k < 3; ++k) rule.weight.push_back(weight);
+  for (int k = 0; k < 3; ++k)
+    rule.weight.push_back(weight);
 }
 
 TriangleRule make_rule(int points) {
@@ -51,10 +52,14 @@ TriangleRule make_rule(int points) {
 const TriangleRule& triangle_rule(int points) {
   static const TriangleRule rules[4] = {make_rule(1), make_rule(3), make_rule(6), make_rule(7)};
   switch (points) {
-    case 1: return rules[0];
-    case 3: return rules[1];
-    case 6: return rules[2];
-    case 7: return rules[3];
+    case 1:
+      return rules[0];
+    case 3:
+      return rules[1];
+    case 6:
+      return rules[2];
+    case 7:
+      return rules[3];
     default:
       make_rule(points);  // throws with the message
       SG_THROW("unreachable");

@@ -112,10 +112,9 @@ InternalForceResult add_internal_forces(Model& model) {
     const Body& body = model.bodies[static_cast<std::size_t>(b)];
     if (body.kind != BodyKind::deformable) continue;
     const auto o = static_cast<std::size_t>(body.node_begin);
-    per_body[static_cast<std::size_t>(b)] =
-        add_body_internal_forces(model, b, n.ux.data() + o, n.uy.data() + o, n.vx.data() + o,
-                                 n.vy.data() + o, n.fx.data() + o, n.fy.data() + o, true,
-                                 n.viscous_fx.data() + o, n.viscous_fy.data() + o);
+    per_body[static_cast<std::size_t>(b)] = add_body_internal_forces(
+        model, b, n.ux.data() + o, n.uy.data() + o, n.vx.data() + o, n.vy.data() + o,
+        n.fx.data() + o, n.fy.data() + o, true, n.viscous_fx.data() + o, n.viscous_fy.data() + o);
   }
   InternalForceResult total;
   for (int b = 0; b < body_count; ++b) {

@@ -5,7 +5,8 @@ namespace sg {
 namespace {
 template <typename F>
 void for_row(const ShapeRows& rows, std::size_t point, F&& visit) {
-  for (auto k = rows.offset[point]; k < rows.offset[point + 1]; ++k) visit(static_cast<std::size_t>(k));
+  for (auto k = rows.offset[point]; k < rows.offset[point + 1]; ++k)
+    visit(static_cast<std::size_t>(k));
 }
 }  // namespace
 
@@ -30,14 +31,15 @@ void set_rigid_velocity(Model& model, BodyId body, const Vec2& velocity, double 
   for (int i = b.node_begin; i < b.node_end; ++i) {
     const auto k = static_cast<std::size_t>(i);
     m += model.nodes.mass[k];
-    c += model.nodes.mass[k] * Vec2(model.nodes.ref_x[k] + model.nodes.ux[k],
-                                    model.nodes.ref_y[k] + model.nodes.uy[k]);
+    c += model.nodes.mass[k] *
+         Vec2(model.nodes.ref_x[k] + model.nodes.ux[k], model.nodes.ref_y[k] + model.nodes.uy[k]);
   }
   c /= m;
   for (int i = b.node_begin; i < b.node_end; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    const Vec2 r = Vec2(model.nodes.ref_x[k] + model.nodes.ux[k],
-                        model.nodes.ref_y[k] + model.nodes.uy[k]) - c;
+    const Vec2 r =
+        Vec2(model.nodes.ref_x[k] + model.nodes.ux[k], model.nodes.ref_y[k] + model.nodes.uy[k]) -
+        c;
     model.nodes.vx[k] = velocity.x() - angular_velocity * r.y();
     model.nodes.vy[k] = velocity.y() + angular_velocity * r.x();
   }
@@ -61,8 +63,10 @@ int body_of_node(const Model& model, int node) {
   int lo = 0, hi = static_cast<int>(model.bodies.size()) - 1;
   while (lo < hi) {
     const int mid = (lo + hi + 1) / 2;
-    if (model.bodies[static_cast<std::size_t>(mid)].node_begin <= node) lo = mid;
-    else hi = mid - 1;
+    if (model.bodies[static_cast<std::size_t>(mid)].node_begin <= node)
+      lo = mid;
+    else
+      hi = mid - 1;
   }
   return lo;
 }
@@ -144,7 +148,8 @@ void compute_contour_positions(const Model& model, std::vector<Vec2>& positions)
 
 double total_mass(const Model& model) {
   double m = 0.0;
-  for (double mi : model.nodes.mass) m += mi;
+  for (double mi : model.nodes.mass)
+    m += mi;
   return m;
 }
 
@@ -161,7 +166,8 @@ double angular_momentum(const Model& model) {
   // moment about any point in the parameter coordinates X_I + u_I (P F^T symmetric).
   double l = 0.0;
   for (std::size_t i = 0; i < model.nodes.size(); ++i) {
-    const Vec2 x(model.nodes.ref_x[i] + model.nodes.ux[i], model.nodes.ref_y[i] + model.nodes.uy[i]);
+    const Vec2 x(model.nodes.ref_x[i] + model.nodes.ux[i],
+                 model.nodes.ref_y[i] + model.nodes.uy[i]);
     l += model.nodes.mass[i] * cross(x, Vec2(model.nodes.vx[i], model.nodes.vy[i]));
   }
   return l;

@@ -29,7 +29,8 @@ BodyId Model::add_deformable_body(const std::string& name, const BodyDiscretizat
                                   MaterialId material) {
   SG_VERIFY(material >= 0 && static_cast<std::size_t>(material) < materials.size(),
             "body '" << name << "': unknown material index " << material);
-  for (const Body& b : bodies) SG_VERIFY(b.name != name, "body name '" << name << "' is used twice");
+  for (const Body& b : bodies)
+    SG_VERIFY(b.name != name, "body name '" << name << "' is used twice");
   Body body;
   body.name = name;
   body.kind = BodyKind::deformable;
@@ -41,7 +42,8 @@ BodyId Model::add_deformable_body(const std::string& name, const BodyDiscretizat
   body.gauss_end = body.gauss_begin + static_cast<int>(d.gauss_weight.size());
   body.triangle_begin = static_cast<int>(triangles.size());
   body.triangle_end = body.triangle_begin + static_cast<int>(d.mesh.triangles.size());
-  for (double w : d.gauss_weight) body.reference_area += w;
+  for (double w : d.gauss_weight)
+    body.reference_area += w;
   body.contour_begin = static_cast<int>(contour_body.size());
   body.contour_end = body.contour_begin + d.mesh.boundary_count;
   contour_body.insert(contour_body.end(), static_cast<std::size_t>(d.mesh.boundary_count),
@@ -70,12 +72,12 @@ BodyId Model::add_deformable_body(const std::string& name, const BodyDiscretizat
 BodyId Model::add_rigid_body(const std::string& name, const Polygon& contour, MaterialId material) {
   SG_VERIFY(material >= 0 && static_cast<std::size_t>(material) < materials.size(),
             "body '" << name << "': unknown material index " << material);
-  for (const Body& b : bodies) SG_VERIFY(b.name != name, "body name '" << name << "' is used twice");
+  for (const Body& b : bodies)
+    SG_VERIFY(b.name != name, "body name '" << name << "' is used twice");
   SG_VERIFY(contour.size() >= 3u,
             "body '" << name << "': a contour needs at least 3 points, got " << contour.size());
   const double area = signed_area(contour);
-  SG_VERIFY(!is_self_intersecting(contour),
-            "body '" << name << "': contour is self-intersecting");
+  SG_VERIFY(!is_self_intersecting(contour), "body '" << name << "': contour is self-intersecting");
   SG_VERIFY(area > 0.0, "body '" << name << "': contour must be counter-clockwise (signed area "
                                  << area << ")");
   const double density = materials[static_cast<std::size_t>(material)].density;
@@ -112,12 +114,16 @@ BodyId Model::add_rigid_strip(const std::string& name, const Polygon& surface, M
                               double closing_shift_x, double mass, double inertia) {
   SG_VERIFY(material >= 0 && static_cast<std::size_t>(material) < materials.size(),
             "body '" << name << "': unknown material index " << material);
-  for (const Body& b : bodies) SG_VERIFY(b.name != name, "body name '" << name << "' is used twice");
+  for (const Body& b : bodies)
+    SG_VERIFY(b.name != name, "body name '" << name << "' is used twice");
   SG_VERIFY(surface.size() >= 2, "body '" << name << "': a strip needs at least 2 points");
-  SG_VERIFY(closing_shift_x != 0.0, "body '" << name << "': a strip needs a closing shift (the period)");
-  SG_VERIFY(mass > 0.0 && inertia > 0.0, "body '" << name << "': mass and inertia must be positive");
+  SG_VERIFY(closing_shift_x != 0.0,
+            "body '" << name << "': a strip needs a closing shift (the period)");
+  SG_VERIFY(mass > 0.0 && inertia > 0.0,
+            "body '" << name << "': mass and inertia must be positive");
   Vec2 c(0, 0);
-  for (const Vec2& p : surface) c += p;
+  for (const Vec2& p : surface)
+    c += p;
   c /= static_cast<double>(surface.size());
   Body body;
   body.name = name;

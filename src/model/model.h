@@ -44,7 +44,7 @@ struct Body {
   // connects to its first point shifted by one period. Closed otherwise.
   bool open_contour = false;
   double closing_shift_x = 0.0;  // open contours: the last point joins the first + (this, 0)
-  int rigid_index = -1;  // index into Model::rigid (rigid bodies)
+  int rigid_index = -1;          // index into Model::rigid (rigid bodies)
   double reference_area = 0.0;
 
   int node_count() const { return node_end - node_begin; }
@@ -61,7 +61,7 @@ enum class DriveMode : std::uint8_t {
 
 // A piecewise-linear function of time, constant beyond its ends (imposed velocities).
 struct PiecewiseLinear {
-  std::vector<double> times;   // strictly increasing
+  std::vector<double> times;  // strictly increasing
   std::vector<double> values;
   double operator()(double t) const;
   static PiecewiseLinear constant(double value) { return {{0.0}, {value}}; }
@@ -69,16 +69,16 @@ struct PiecewiseLinear {
 
 struct RigidDrive {
   DriveMode mode[3] = {DriveMode::free, DriveMode::free, DriveMode::free};  // x, y, theta
-  PiecewiseLinear velocity[3];   // used when mode == velocity (length/time, rad/time)
-  double force[3] = {0, 0, 0};   // used when mode == force (force, force, torque)
+  PiecewiseLinear velocity[3];  // used when mode == velocity (length/time, rad/time)
+  double force[3] = {0, 0, 0};  // used when mode == force (force, force, torque)
 };
 
 // Rigid bodies: a few scalars each (structure of arrays, one entry per rigid body).
 struct RigidState {
-  std::vector<double> x, y, theta;          // centre of mass and orientation (checkpointed)
-  std::vector<double> vx, vy, omega;        // velocities (checkpointed)
-  std::vector<double> fx, fy, torque;       // forces received this step (contacts, gravity)
-  std::vector<double> mass, inertia;        // from contour and density
+  std::vector<double> x, y, theta;     // centre of mass and orientation (checkpointed)
+  std::vector<double> vx, vy, omega;   // velocities (checkpointed)
+  std::vector<double> fx, fy, torque;  // forces received this step (contacts, gravity)
+  std::vector<double> mass, inertia;   // from contour and density
   std::vector<RigidDrive> drive;
   std::size_t size() const { return x.size(); }
 };
@@ -91,7 +91,7 @@ struct NodeState {
   std::vector<double> vx, vy;        // velocity parameters (checkpointed)
   std::vector<double> fx, fy;        // total force on each parameter (recomputed each step)
   std::vector<double> viscous_fx, viscous_fy;  // its bulk-damping part (energy bookkeeping)
-  std::vector<double> mass;          // lumped mass rho * integral of N_I
+  std::vector<double> mass;                    // lumped mass rho * integral of N_I
   std::vector<double> inverse_mass;
 
   std::size_t size() const { return ref_x.size(); }
@@ -103,16 +103,16 @@ struct Model {
   std::vector<MaterialDef> material_defs;
   std::vector<MaterialParams> materials;
   NodeState nodes;
-  ShapeRows gauss_rows;               // local node numbering per body
-  std::vector<double> gauss_weight;   // reference area of each Gauss point
-  ShapeRows node_rows;                // row of each node at its own reference position
+  ShapeRows gauss_rows;                       // local node numbering per body
+  std::vector<double> gauss_weight;           // reference area of each Gauss point
+  ShapeRows node_rows;                        // row of each node at its own reference position
   std::vector<std::array<int, 3>> triangles;  // global node numbering
   // Contour points of all bodies (see Body::contour_begin). For rigid bodies: the offset of
   // each point from the centre of mass in the body frame (zero for deformable bodies).
   std::vector<Vec2> rigid_contour_offset;
-  std::vector<BodyId> contour_body;   // owner of each contour point
+  std::vector<BodyId> contour_body;  // owner of each contour point
   RigidState rigid;
-  Vec2 gravity = Vec2::Zero();        // acceleration (length / time^2)
+  Vec2 gravity = Vec2::Zero();  // acceleration (length / time^2)
   // Periodic boundary in x over [x_min, x_max) when periodic_x is set.
   bool periodic_x = false;
   double x_min = 0.0, x_max = 0.0;
@@ -120,8 +120,8 @@ struct Model {
   MaterialId add_material(const MaterialDef& def);
   // Discretizes `contour` (CCW, simple; sampled at about the node spacing) and appends the
   // body. Errors name the body.
-  BodyId add_deformable_body(const std::string& name, const Polygon& contour,
-                             MaterialId material, const DiscretizationParams& params);
+  BodyId add_deformable_body(const std::string& name, const Polygon& contour, MaterialId material,
+                             const DiscretizationParams& params);
   // Appends an already discretized body (tests, imported meshes).
   BodyId add_deformable_body(const std::string& name, const BodyDiscretization& d,
                              MaterialId material);

@@ -33,7 +33,7 @@ GrainSpec read_grain(const TomlReader& t, std::size_t index) {
   GrainSpec g;
   g.name = t.string("name", "grain_" + std::to_string(index));
   g.shape = t.one_of("shape", {"disc", "ellipse"}, "disc") == "disc" ? GrainShape::disc
-                                                                      : GrainShape::ellipse;
+                                                                     : GrainShape::ellipse;
   g.center = t.vec2("center");
   if (g.shape == GrainShape::disc) {
     g.radius = t.positive("radius");
@@ -50,7 +50,8 @@ GrainSpec read_grain(const TomlReader& t, std::size_t index) {
   if (!(g.stretch.x() > 0 && g.stretch.y() > 0))
     t.fail("stretch", "expected two positive stretch ratios [sx, sy]");
   g.rigid = t.boolean("rigid", false);
-  if (g.rigid && g.stretch != Vec2(1.0, 1.0)) t.fail("stretch", "a rigid grain cannot be stretched");
+  if (g.rigid && g.stretch != Vec2(1.0, 1.0))
+    t.fail("stretch", "a rigid grain cannot be stretched");
   return g;
 }
 
@@ -68,8 +69,8 @@ WallDef read_wall(const TomlReader& t, std::size_t index) {
 }
 
 ContactLawDef read_contact_law(const TomlReader& t) {
-  t.reject_unknown_keys({"materials", "law", "normal_stiffness", "tangential_stiffness",
-                         "friction", "adhesion", "shear_strength", "cohesion"});
+  t.reject_unknown_keys({"materials", "law", "normal_stiffness", "tangential_stiffness", "friction",
+                         "adhesion", "shear_strength", "cohesion"});
   ContactLawDef d;
   const auto pair = t.string_pair("materials");
   d.material_a = pair.first;
@@ -87,7 +88,8 @@ ContactLawDef read_contact_law(const TomlReader& t) {
   d.params.adhesion = t.non_negative("adhesion", cohesion);
   d.params.shear_strength = t.non_negative("shear_strength", cohesion);
   try {
-    validate(d.params, "contact law for materials '" + d.material_a + "' and '" + d.material_b + "'");
+    validate(d.params,
+             "contact law for materials '" + d.material_a + "' and '" + d.material_b + "'");
   } catch (const Error& e) {
     t.fail("law", e.what());
   }
@@ -149,21 +151,23 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
   }
   if (s.materials.empty()) root.fail("materials", "at least one [[materials]] table is required");
   if (auto t = root.table("shear_cell")) {
-    t->reject_unknown_keys({"length", "grains", "diameter", "grain_material",
-                            "first_body_material", "roughness_rms", "hurst",
-                            "first_body_thickness", "gap", "compaction_time", "velocity", "seed"});
+    t->reject_unknown_keys({"length", "grains", "diameter", "grain_material", "first_body_material",
+                            "roughness_rms", "hurst", "first_body_thickness", "gap",
+                            "compaction_time", "velocity", "seed"});
     ShearCellDef c;
     c.length = t->positive("length", c.length);
     c.grains = static_cast<int>(t->integer("grains", c.grains));
     if (c.grains < 1) t->fail("grains", "expected a positive integer");
     const Vec2 d = t->vec2("diameter", Vec2(0.85, 1.15));
-    if (!(d.x() > 0 && d.y() >= d.x())) t->fail("diameter", "expected [min, max] with 0 < min <= max");
+    if (!(d.x() > 0 && d.y() >= d.x()))
+      t->fail("diameter", "expected [min, max] with 0 < min <= max");
     c.diameter.min = d.x();
     c.diameter.max = d.y();
     c.grain_material = t->string("grain_material");
     c.first_body_material = t->string("first_body_material");
     for (const char* key : {"grain_material", "first_body_material"})
-      if (!material_names.count(t->string(key))) t->fail(key, "unknown material '" + t->string(key) + "'");
+      if (!material_names.count(t->string(key)))
+        t->fail(key, "unknown material '" + t->string(key) + "'");
     c.roughness_rms = t->non_negative("roughness_rms", c.roughness_rms);
     c.hurst = t->number("hurst", c.hurst);
     if (!(c.hurst > 0 && c.hurst < 1)) t->fail("hurst", "expected a number in (0, 1)");
@@ -198,7 +202,8 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
   double cohesive_reach = 0.0;
   for (const TomlReader& t : root.array_of_tables("contact_laws")) {
     s.contact_laws.push_back(read_contact_law(t));
-    for (const std::string* m : {&s.contact_laws.back().material_a, &s.contact_laws.back().material_b})
+    for (const std::string* m :
+         {&s.contact_laws.back().material_a, &s.contact_laws.back().material_b})
       if (!material_names.count(*m)) t.fail("materials", "unknown material '" + *m + "'");
     const ContactLawParams& p = s.contact_laws.back().params;
     cohesive_reach = std::max(cohesive_reach, 0.5 * p.adhesion / p.normal_stiffness);
@@ -223,8 +228,10 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
   if (!s.contact_laws.empty()) {
     // Every pair of materials in use needs a law: checked here, with the file, not mid-run.
     std::set<std::string> used;
-    for (const GrainSpec& g : s.grains) used.insert(g.material);
-    for (const WallDef& w : s.walls) used.insert(w.material);
+    for (const GrainSpec& g : s.grains)
+      used.insert(g.material);
+    for (const WallDef& w : s.walls)
+      used.insert(w.material);
     if (s.shear_cell) {
       used.insert(s.shear_cell->grain_material);
       used.insert(s.shear_cell->first_body_material);
@@ -232,7 +239,8 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
     try {
       MaterialPairTable table = contact_law_table(s);
       std::vector<int> ids;
-      for (const std::string& m : used) ids.push_back(table.find_material(m));
+      for (const std::string& m : used)
+        ids.push_back(table.find_material(m));
       table.verify_covers(ids);
     } catch (const Error& e) {
       root.fail("contact_laws", e.what());
@@ -243,7 +251,8 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
 
 MaterialPairTable contact_law_table(const ScenarioDef& scenario) {
   std::vector<std::string> names;
-  for (const MaterialDef& m : scenario.materials) names.push_back(m.name);
+  for (const MaterialDef& m : scenario.materials)
+    names.push_back(m.name);
   MaterialPairTable table(names);
   for (const ContactLawDef& law : scenario.contact_laws)
     table.set(law.material_a, law.material_b, law.params);
@@ -260,7 +269,8 @@ ContactSettings contact_settings(const ScenarioDef& scenario) {
 Model build_model(const ScenarioDef& scenario) {
   Model model;
   model.gravity = scenario.gravity;
-  for (const MaterialDef& m : scenario.materials) model.add_material(m);
+  for (const MaterialDef& m : scenario.materials)
+    model.add_material(m);
   auto material_id = [&](const std::string& name) {
     for (std::size_t i = 0; i < scenario.materials.size(); ++i)
       if (scenario.materials[i].name == name) return static_cast<MaterialId>(i);
@@ -271,19 +281,20 @@ Model build_model(const ScenarioDef& scenario) {
   model.x_min = scenario.x_min;
   model.x_max = scenario.x_max;
   for (const GrainSpec& g : scenario.grains) {
-    const Polygon contour = g.shape == GrainShape::disc
-                                ? make_disc(g.center, g.radius, h)
-                                : make_ellipse(g.center, g.semi_axes.x(), g.semi_axes.y(), g.angle, h);
+    const Polygon contour = g.shape == GrainShape::disc ? make_disc(g.center, g.radius, h)
+                                                        : make_ellipse(g.center, g.semi_axes.x(),
+                                                                       g.semi_axes.y(), g.angle, h);
     if (g.rigid) {
       const BodyId b = model.add_rigid_body(g.name, contour, material_id(g.material));
-      const auto r = static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index);
+      const auto r =
+          static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index);
       model.rigid.vx[r] = g.velocity.x();
       model.rigid.vy[r] = g.velocity.y();
       model.rigid.omega[r] = g.spin;
       continue;
     }
-    const BodyId b =
-        model.add_deformable_body(g.name, contour, material_id(g.material), scenario.discretization);
+    const BodyId b = model.add_deformable_body(g.name, contour, material_id(g.material),
+                                               scenario.discretization);
     if (g.stretch != Vec2(1.0, 1.0)) set_affine_deformation(model, b, g.stretch.asDiagonal());
     set_rigid_velocity(model, b, g.velocity, g.spin);
   }
@@ -294,7 +305,8 @@ Model build_model(const ScenarioDef& scenario) {
     const BodyId b = model.add_rigid_body(w.name, make_rectangle(w.lower_left, w.upper_right, h),
                                           material_id(w.material));
     RigidDrive& drive =
-        model.rigid.drive[static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index)];
+        model.rigid
+            .drive[static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index)];
     const double v[3] = {w.velocity.x(), w.velocity.y(), 0.0};
     for (int d = 0; d < 3; ++d) {
       drive.mode[d] = DriveMode::velocity;

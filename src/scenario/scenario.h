@@ -21,15 +21,15 @@ enum class GrainShape { disc, ellipse };
 struct GrainSpec {
   std::string name;
   GrainShape shape = GrainShape::disc;
-  Vec2 center = Vec2::Zero();        // length
-  double radius = 0.5;               // disc radius (length)
-  Vec2 semi_axes = Vec2(0.5, 0.5);   // ellipse semi-axes (length)
-  double angle = 0.0;                // ellipse orientation (rad)
+  Vec2 center = Vec2::Zero();       // length
+  double radius = 0.5;              // disc radius (length)
+  Vec2 semi_axes = Vec2(0.5, 0.5);  // ellipse semi-axes (length)
+  double angle = 0.0;               // ellipse orientation (rad)
   std::string material;
-  Vec2 velocity = Vec2::Zero();      // initial velocity (length / time)
-  double spin = 0.0;                 // initial angular velocity (rad / time)
-  Vec2 stretch = Vec2(1.0, 1.0);     // initial homogeneous stretch along x and y (1 = none)
-  bool rigid = false;                // rigid grain (3 DOF) instead of a meshfree continuum
+  Vec2 velocity = Vec2::Zero();   // initial velocity (length / time)
+  double spin = 0.0;              // initial angular velocity (rad / time)
+  Vec2 stretch = Vec2(1.0, 1.0);  // initial homogeneous stretch along x and y (1 = none)
+  bool rigid = false;             // rigid grain (3 DOF) instead of a meshfree continuum
 };
 
 // A rigid wall: a rectangle, fixed or moving at an imposed velocity.
@@ -49,13 +49,13 @@ struct ScenarioDef {
   std::filesystem::path source;  // the scenario file
   std::string name;              // run name: outputs go to <output_root>/<name>/
   // [time]
-  double duration = 1.0;           // simulated time
-  double time_step_safety = 0.8;   // fraction of the estimated critical step
-  double fixed_time_step = 0.0;    // > 0: use this step instead of the estimate
+  double duration = 1.0;          // simulated time
+  double time_step_safety = 0.8;  // fraction of the estimated critical step
+  double fixed_time_step = 0.0;   // > 0: use this step instead of the estimate
   // [output]
   std::filesystem::path output_root = "out";
-  double series_period = 0.0;      // time between rows of series.csv (0: 1/200 of duration)
-  double field_period = 0.0;       // time between VTK snapshots (0: 1/20 of duration)
+  double series_period = 0.0;  // time between rows of series.csv (0: 1/200 of duration)
+  double field_period = 0.0;   // time between VTK snapshots (0: 1/20 of duration)
   // [discretization]
   DiscretizationParams discretization;
   // [physics]

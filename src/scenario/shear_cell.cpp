@@ -37,8 +37,10 @@ ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId g
   rough.rms = def.roughness_rms;
   const RoughProfile bottom_profile = make_rough_profile(rough, def.seed * 2 + 1);
   const RoughProfile top_profile = make_rough_profile(rough, def.seed * 2 + 2);
-  const double bottom_peak = *std::max_element(bottom_profile.heights.begin(), bottom_profile.heights.end());
-  const double top_valley = *std::min_element(top_profile.heights.begin(), top_profile.heights.end());
+  const double bottom_peak =
+      *std::max_element(bottom_profile.heights.begin(), bottom_profile.heights.end());
+  const double top_valley =
+      *std::min_element(top_profile.heights.begin(), top_profile.heights.end());
 
   // Grains packed in a periodic strip above the bottom surface's peaks.
   MixtureDef mixture;
@@ -70,21 +72,30 @@ ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId g
   // to right (material above), each closed across the seam by one period.
   const double density = model.materials[static_cast<std::size_t>(first_body_material)].density;
   const double mass = density * period * def.first_body_thickness;
-  const double inertia = mass * (period * period + def.first_body_thickness * def.first_body_thickness) / 12.0;
+  const double inertia =
+      mass * (period * period + def.first_body_thickness * def.first_body_thickness) / 12.0;
   const std::size_t n = bottom_profile.heights.size();
   Polygon bottom, top;
   for (std::size_t j = 0; j < n; ++j) {
     const std::size_t k = n - 1 - j;
-    bottom.emplace_back(static_cast<double>(k) * bottom_profile.spacing(), bottom_profile.heights[k]);
-    top.emplace_back(static_cast<double>(j) * top_profile.spacing(), info.top_mean_y + top_profile.heights[j]);
+    bottom.emplace_back(static_cast<double>(k) * bottom_profile.spacing(),
+                        bottom_profile.heights[k]);
+    top.emplace_back(static_cast<double>(j) * top_profile.spacing(),
+                     info.top_mean_y + top_profile.heights[j]);
   }
-  const BodyId bottom_id = model.add_rigid_strip("bottom", bottom, first_body_material, -period, mass, inertia);
-  const BodyId top_id = model.add_rigid_strip("top", top, first_body_material, period, mass, inertia);
-  const double closing_speed = (info.top_mean_y - info.bottom_mean_y - info.gap) / def.compaction_time;
+  const BodyId bottom_id =
+      model.add_rigid_strip("bottom", bottom, first_body_material, -period, mass, inertia);
+  const BodyId top_id =
+      model.add_rigid_strip("top", top, first_body_material, period, mass, inertia);
+  const double closing_speed =
+      (info.top_mean_y - info.bottom_mean_y - info.gap) / def.compaction_time;
   for (BodyId b : {bottom_id, top_id}) {
-    RigidDrive& d = model.rigid.drive[static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index)];
+    RigidDrive& d =
+        model.rigid
+            .drive[static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index)];
     const double sign = b == top_id ? 1.0 : -1.0;
-    for (int k = 0; k < 3; ++k) d.mode[k] = DriveMode::velocity;
+    for (int k = 0; k < 3; ++k)
+      d.mode[k] = DriveMode::velocity;
     d.velocity[0] = switch_at(def.compaction_time, 0.0, sign * 0.5 * def.velocity);
     d.velocity[1] = b == top_id ? switch_at(def.compaction_time, -closing_speed, 0.0)
                                 : PiecewiseLinear::constant(0.0);
@@ -92,7 +103,8 @@ ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId g
   }
 
   for (std::size_t i = 0; i < grains.size(); ++i)
-    model.add_deformable_body("grain_" + std::to_string(i), packed.contours[i], grain_material, params);
+    model.add_deformable_body("grain_" + std::to_string(i), packed.contours[i], grain_material,
+                              params);
   return info;
 }
 

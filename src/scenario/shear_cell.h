@@ -14,18 +14,18 @@
 namespace sg {
 
 struct ShearCellDef {
-  double length = 20.0;                 // L, the period (length)
-  int grains = 60;                      // N
+  double length = 20.0;                                 // L, the period (length)
+  int grains = 60;                                      // N
   SizeRangeDef diameter{0.85, 1.15, SizeLaw::uniform};  // paper 001
-  std::string grain_material;           // a [[materials]] name
-  std::string first_body_material;      // a [[materials]] name
-  double roughness_rms = 0.3;           // RMS height of both surfaces (length)
-  double hurst = 0.8;                   // Hurst exponent of the self-affine surfaces
-  double first_body_thickness = 2.0;    // for the first bodies' mass (length)
-  double gap = 0.0;                     // D, mean gap after compaction; 0: 90% of the packed height
-  double compaction_time = 1.0;         // time to close the gap (time)
-  double velocity = 1.0;                // V, sliding velocity (top +V/2, bottom -V/2)
-  std::uint64_t seed = 1;               // every random choice (sizes, packing, roughness)
+  std::string grain_material;                           // a [[materials]] name
+  std::string first_body_material;                      // a [[materials]] name
+  double roughness_rms = 0.3;                           // RMS height of both surfaces (length)
+  double hurst = 0.8;                 // Hurst exponent of the self-affine surfaces
+  double first_body_thickness = 2.0;  // for the first bodies' mass (length)
+  double gap = 0.0;                   // D, mean gap after compaction; 0: 90% of the packed height
+  double compaction_time = 1.0;       // time to close the gap (time)
+  double velocity = 1.0;              // V, sliding velocity (top +V/2, bottom -V/2)
+  std::uint64_t seed = 1;             // every random choice (sizes, packing, roughness)
 };
 
 struct ShearCellInfo {

@@ -14,7 +14,8 @@ struct ParsedToml {
 };
 
 TomlDocument::TomlDocument(const std::filesystem::path& file) : file_(file), parsed_(nullptr) {
-  SG_VERIFY(std::filesystem::exists(file), "scenario file '" << file.string() << "' does not exist");
+  SG_VERIFY(std::filesystem::exists(file),
+            "scenario file '" << file.string() << "' does not exist");
   try {
     parsed_ = new ParsedToml{toml::parse_file(file.string())};
   } catch (const toml::parse_error& e) {
@@ -23,9 +24,13 @@ TomlDocument::TomlDocument(const std::filesystem::path& file) : file_(file), par
   }
 }
 
-TomlDocument::~TomlDocument() { delete parsed_; }
+TomlDocument::~TomlDocument() {
+  delete parsed_;
+}
 
-TomlReader TomlDocument::root() const { return TomlReader(parsed_->table, file_, ""); }
+TomlReader TomlDocument::root() const {
+  return TomlReader(parsed_->table, file_, "");
+}
 
 TomlReader::TomlReader(const toml::table& table, std::filesystem::path file, std::string prefix)
     : table_(&table), file_(std::move(file)), prefix_(std::move(prefix)) {}
@@ -34,7 +39,9 @@ std::string TomlReader::full_key(const std::string& key) const {
   return prefix_.empty() ? key : prefix_ + "." + key;
 }
 
-const toml::node* TomlReader::find(const std::string& key) const { return table_->get(key); }
+const toml::node* TomlReader::find(const std::string& key) const {
+  return table_->get(key);
+}
 
 void TomlReader::fail(const std::string& key, const std::string& message) const {
   const toml::node* n = find(key);
@@ -42,7 +49,9 @@ void TomlReader::fail(const std::string& key, const std::string& message) const 
   SG_THROW(file_.string() << ":" << line << ": key '" << full_key(key) << "': " << message);
 }
 
-bool TomlReader::has(const std::string& key) const { return find(key) != nullptr; }
+bool TomlReader::has(const std::string& key) const {
+  return find(key) != nullptr;
+}
 
 double TomlReader::as_number(const std::string& key, const toml::node& n) const {
   if (auto v = n.value<double>()) return *v;  // integers convert too
@@ -165,7 +174,8 @@ void TomlReader::reject_unknown_keys(std::initializer_list<const char*> known) c
     const std::string key(k.str());
     if (!allowed.count(key)) {
       std::string list;
-      for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+      for (const auto& a : allowed)
+        list += (list.empty() ? "" : ", ") + a;
       fail(key, "unknown key (known keys here: " + list + ")");
     }
   }

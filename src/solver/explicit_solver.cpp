@@ -8,8 +8,8 @@
 namespace sg {
 
 double EnergyLedger::residual() const {
-  return external_work - (kinetic - initial_kinetic) - (elastic + contact_elastic - initial_elastic) -
-         damping_dissipated - contact_dissipated;
+  return external_work - (kinetic - initial_kinetic) -
+         (elastic + contact_elastic - initial_elastic) - damping_dissipated - contact_dissipated;
 }
 
 void ExplicitSolver::step(double dt) {
@@ -131,7 +131,8 @@ std::pair<double, double> ExplicitSolver::advance_rigid_bodies(double dt) {
         power -= received[d] * *velocity[d];
         continue;
       }
-      const double external = gravity[d] + (drive.mode[d] == DriveMode::force ? drive.force[d] : 0.0);
+      const double external =
+          gravity[d] + (drive.mode[d] == DriveMode::force ? drive.force[d] : 0.0);
       *velocity[d] = v_old + dt * (received[d] + external) / inertia[d];
       *position[d] += dt * *velocity[d];
       kinetic += 0.5 * inertia[d] * v_old * *velocity[d];
@@ -148,8 +149,10 @@ void ExplicitSolver::wrap_periodic_bodies() {
     double shift = 0.0;
     if (body.kind == BodyKind::rigid) {
       double& x = model_.rigid.x[static_cast<std::size_t>(body.rigid_index)];
-      if (x < model_.x_min) shift = period;
-      else if (x >= model_.x_max) shift = -period;
+      if (x < model_.x_min)
+        shift = period;
+      else if (x >= model_.x_max)
+        shift = -period;
       x += shift;
       continue;
     }
@@ -157,10 +160,13 @@ void ExplicitSolver::wrap_periodic_bodies() {
     // every precomputed row are invariant under a translation of the reference frame.
     const auto first = static_cast<std::size_t>(body.node_begin);
     const double x = n.ref_x[first] + n.ux[first];
-    if (x < model_.x_min) shift = period;
-    else if (x >= model_.x_max) shift = -period;
+    if (x < model_.x_min)
+      shift = period;
+    else if (x >= model_.x_max)
+      shift = -period;
     if (shift != 0.0)
-      for (int i = body.node_begin; i < body.node_end; ++i) n.ref_x[static_cast<std::size_t>(i)] += shift;
+      for (int i = body.node_begin; i < body.node_end; ++i)
+        n.ref_x[static_cast<std::size_t>(i)] += shift;
   }
 }
 

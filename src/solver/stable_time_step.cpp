@@ -21,8 +21,10 @@ double estimate_max_frequency(const Model& model, BodyId body_id, int iterations
   const auto n = static_cast<std::size_t>(body.node_count());
   const auto o = static_cast<std::size_t>(body.node_begin);
   const NodeState& s = model.nodes;
-  std::vector<double> ux(s.ux.begin() + static_cast<long>(o), s.ux.begin() + static_cast<long>(o + n));
-  std::vector<double> uy(s.uy.begin() + static_cast<long>(o), s.uy.begin() + static_cast<long>(o + n));
+  std::vector<double> ux(s.ux.begin() + static_cast<long>(o),
+                         s.ux.begin() + static_cast<long>(o + n));
+  std::vector<double> uy(s.uy.begin() + static_cast<long>(o),
+                         s.uy.begin() + static_cast<long>(o + n));
   const std::vector<double> zero(n, 0.0);
   std::vector<double> f0x(n, 0.0), f0y(n, 0.0), fx(n), fy(n), px(n), py(n), ux_p(n), uy_p(n);
   add_body_internal_forces(model, body_id, ux.data(), uy.data(), zero.data(), zero.data(),
@@ -37,7 +39,8 @@ double estimate_max_frequency(const Model& model, BodyId body_id, int iterations
   const double typical_length = std::sqrt(body.reference_area);
   for (int it = 0; it < iterations; ++it) {
     double norm = 0.0;
-    for (std::size_t i = 0; i < n; ++i) norm += px[i] * px[i] + py[i] * py[i];
+    for (std::size_t i = 0; i < n; ++i)
+      norm += px[i] * px[i] + py[i] * py[i];
     norm = std::sqrt(norm);
     if (norm == 0.0) break;
     const double eps = 1e-7 * typical_length;  // small against the body: linear regime
@@ -97,13 +100,17 @@ double contact_frequency(const Model& model, const Body& body, double k) {
     const int count = body.contour_count();
     for (int i = 0; i + 1 < count || (!body.open_contour && i < count); ++i) {
       const Vec2 a = model.rigid_contour_offset[static_cast<std::size_t>(body.contour_begin + i)];
-      const Vec2 b = model.rigid_contour_offset[static_cast<std::size_t>(body.contour_begin + (i + 1) % count)];
+      const Vec2 b =
+          model
+              .rigid_contour_offset[static_cast<std::size_t>(body.contour_begin + (i + 1) % count)];
       length += (b - a).norm();
     }
     const double radius2 = model.rigid.inertia[r] / model.rigid.mass[r];
     double max_arm2 = 0.0;
     for (int i = 0; i < count; ++i)
-      max_arm2 = std::max(max_arm2, model.rigid_contour_offset[static_cast<std::size_t>(body.contour_begin + i)].squaredNorm());
+      max_arm2 = std::max(
+          max_arm2, model.rigid_contour_offset[static_cast<std::size_t>(body.contour_begin + i)]
+                        .squaredNorm());
     // translation and rotation: k_eff / m and k_eff r_max^2 / I
     return std::sqrt(2.0 * k * length / model.rigid.mass[r] * std::max(1.0, max_arm2 / radius2));
   }
@@ -123,8 +130,8 @@ double contact_frequency(const Model& model, const Body& body, double k) {
 }  // namespace
 
 StableStep estimate_stable_time_step(const Model& model, double safety, double contact_stiffness) {
-  SG_VERIFY(safety > 0.0 && safety <= 1.0, "time step safety factor " << safety
-                                                                      << " must be in (0, 1]");
+  SG_VERIFY(safety > 0.0 && safety <= 1.0,
+            "time step safety factor " << safety << " must be in (0, 1]");
   StableStep best;
   best.dt = std::numeric_limits<double>::infinity();
   // Bodies are independent: estimate in parallel, pick the minimum in body order.

@@ -25,9 +25,9 @@ double estimate_max_frequency(const Model& model, BodyId body, int iterations = 
 double wave_speed_frequency_bound(const Model& model, BodyId body);
 
 struct StableStep {
-  double dt = 0.0;            // safety * min over bodies of the critical step
-  BodyId limiting_body = -1;  // the body that sets it
-  double omega_max = 0.0;     // its highest frequency
+  double dt = 0.0;               // safety * min over bodies of the critical step
+  BodyId limiting_body = -1;     // the body that sets it
+  double omega_max = 0.0;        // its highest frequency
   bool damping_limited = false;  // xi > 1 for that body: the damping sets the limit
 };
 // `contact_stiffness`: the largest contact penalty k (force / length^2), 0 without contacts.

@@ -38,7 +38,8 @@ TEST(Polygon, DiscApproachesCircleQuadratically) {
   EXPECT_GT(e_coarse, 0.0);
   EXPECT_NEAR(e_coarse / e_fine, 4.0, 0.3);
   // Vertices lie on the circle.
-  for (const Vec2& v : fine) EXPECT_NEAR(v.norm(), radius, 1e-14);
+  for (const Vec2& v : fine)
+    EXPECT_NEAR(v.norm(), radius, 1e-14);
   EXPECT_NEAR(polar_second_moment(fine), std::numbers::pi / 2.0, 2e-2);
 }
 

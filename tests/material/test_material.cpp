@@ -37,7 +37,8 @@ TEST(Material, LameParametersOfPlaneStrain) {
 }
 
 TEST(Material, NeoHookeanUniformDilationClosedForm) {
-  // F = s I: P = [mu (s - 1/s) + lambda ln(s^2) / s] I, W = mu (s^2 - 1) - mu ln s^2 + lambda/2 ln^2 s^2.
+  // F = s I: P = [mu (s - 1/s) + lambda ln(s^2) / s] I, W = mu (s^2 - 1) - mu ln s^2 + lambda/2
+  // ln^2 s^2.
   const MaterialParams m = make_material_params(soft(MaterialLaw::neo_hookean));
   const double s = 1.01;
   const ElasticResponse r = elastic_response(m, s * Mat2::Identity());

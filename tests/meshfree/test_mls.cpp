@@ -84,7 +84,8 @@ TEST(Mls, PartitionOfUnityAndLinearReproductionAtRandomPoints) {
 TEST(Mls, ReproductionIsScaleInvariant) {
   // Same lattice in micrometres: the shifted, scaled basis keeps A well conditioned.
   std::vector<Vec2> nodes = jittered_lattice(8, 3);
-  for (Vec2& p : nodes) p = 1e-6 * p + Vec2(3e-3, -2e-3);
+  for (Vec2& p : nodes)
+    p = 1e-6 * p + Vec2(3e-3, -2e-3);
   const MlsShapeFunctions mls(nodes, MlsParams{}, "micro");
   ShapeRows rows;
   const Vec2 x = 1e-6 * Vec2(0.37, 0.61) + Vec2(3e-3, -2e-3);
@@ -101,7 +102,8 @@ TEST(Mls, ReproductionIsScaleInvariant) {
 
 TEST(Mls, CollinearNodesAreRefusedWithBodyAndPoint) {
   std::vector<Vec2> nodes;
-  for (int i = 0; i < 20; ++i) nodes.emplace_back(0.1 * i, 0.0);
+  for (int i = 0; i < 20; ++i)
+    nodes.emplace_back(0.1 * i, 0.0);
   const MlsShapeFunctions mls(nodes, MlsParams{}, "needle");
   ShapeRows rows;
   try {

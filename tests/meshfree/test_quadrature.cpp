@@ -28,7 +28,8 @@ TEST(TriangleQuadrature, ExactUpToDegree) {
     const TriangleRule& rule = triangle_rule(points);
     ASSERT_EQ(rule.weight.size(), static_cast<std::size_t>(points));
     double weight_sum = 0.0;
-    for (double w : rule.weight) weight_sum += w;
+    for (double w : rule.weight)
+      weight_sum += w;
     EXPECT_NEAR(weight_sum, 1.0, 1e-14);
     for (int degree = 0; degree <= rule.degree; ++degree)
       for (int i = 0; i <= degree; ++i)
@@ -38,12 +39,15 @@ TEST(TriangleQuadrature, ExactUpToDegree) {
     double worst = 0.0;
     const int next = rule.degree + 1;
     for (int i = 0; i <= next; ++i)
-      worst = std::max(worst, std::abs(rule_monomial(rule, i, next - i) - exact_monomial(i, next - i)));
+      worst =
+          std::max(worst, std::abs(rule_monomial(rule, i, next - i) - exact_monomial(i, next - i)));
     EXPECT_GT(worst, 1e-6) << points << " points";
   }
 }
 
-TEST(TriangleQuadrature, UnsupportedCountIsAnError) { EXPECT_THROW(triangle_rule(4), Error); }
+TEST(TriangleQuadrature, UnsupportedCountIsAnError) {
+  EXPECT_THROW(triangle_rule(4), Error);
+}
 
 }  // namespace
 }  // namespace sg

@@ -58,9 +58,9 @@ TEST(PatchTest, HomogeneousDeformationIsReproducedExactly) {
       const auto k = static_cast<std::size_t>(i);
       const Vec2 fi(model.nodes.fx[k], model.nodes.fy[k]);
       resultant += fi;
-      moment += cross(Vec2(model.nodes.ref_x[k] + model.nodes.ux[k],
-                           model.nodes.ref_y[k] + model.nodes.uy[k]),
-                      fi);
+      moment += cross(
+          Vec2(model.nodes.ref_x[k] + model.nodes.ux[k], model.nodes.ref_y[k] + model.nodes.uy[k]),
+          fi);
     }
     const double force_scale = p_exact.norm() * h;  // a node's share of a boundary traction
     EXPECT_NEAR(resultant.norm(), 0.0, 1e-11 * force_scale);
@@ -86,8 +86,8 @@ TEST(PatchTest, HomogeneousDeformationIsReproducedExactly) {
 }
 
 TEST(Objectivity, RigidRotationOf90DegreesGivesNoStressNoForce) {
-  Model model = scenes::single_disc(scenes::elastic_material(MaterialLaw::neo_hookean, 0.05),
-                                    0.5, 0.08);
+  Model model =
+      scenes::single_disc(scenes::elastic_material(MaterialLaw::neo_hookean, 0.05), 0.5, 0.08);
   set_affine_deformation(model, 0, rotation(std::numbers::pi / 2));
   // A spinning velocity field on top: the damping must not see it either.
   set_rigid_velocity(model, 0, Vec2(0.3, -0.2), 2.0);
@@ -171,7 +171,8 @@ TEST(BadInput, MaterialErrorsNameTheMaterial) {
 TEST(Mass, LumpedMassesArePositiveAndSumToTheBodyMass) {
   const double radius = 0.5, h = 0.07;
   Model model = scenes::single_disc(scenes::elastic_material(), radius, h);
-  for (double m : model.nodes.mass) EXPECT_GT(m, 0.0);
+  for (double m : model.nodes.mass)
+    EXPECT_GT(m, 0.0);
   // Partition of unity: sum of lumped masses = rho * (polygon area), to round-off.
   EXPECT_NEAR(total_mass(model), model.bodies[0].reference_area, 1e-12);
   const Polygon contour = make_disc(Vec2(0, 0), radius, h);

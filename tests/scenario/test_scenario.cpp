@@ -126,8 +126,11 @@ TEST(Scenario, ShearCellBuildsTwoDrivenFirstBodiesAndTheGrains) {
   EXPECT_EQ(model.bodies[0].name, "bottom");
   EXPECT_EQ(model.bodies[1].name, "top");
   for (int b : {0, 1}) {
-    const RigidDrive& d = model.rigid.drive[static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index)];
-    for (int k = 0; k < 3; ++k) EXPECT_EQ(d.mode[k], DriveMode::velocity);
+    const RigidDrive& d =
+        model.rigid
+            .drive[static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index)];
+    for (int k = 0; k < 3; ++k)
+      EXPECT_EQ(d.mode[k], DriveMode::velocity);
     // After the compaction: +V/2 for the top, -V/2 for the bottom; no vertical motion.
     const double late = 2.0 * s.shear_cell->compaction_time;
     EXPECT_DOUBLE_EQ(d.velocity[0](late), (b == 1 ? 0.5 : -0.5) * s.shear_cell->velocity);
@@ -136,9 +139,11 @@ TEST(Scenario, ShearCellBuildsTwoDrivenFirstBodiesAndTheGrains) {
   // The top surface lies above every grain, the bottom one below.
   double top_min = 1e300, bottom_max = -1e300;
   for (int k = model.bodies[1].contour_begin; k < model.bodies[1].contour_end; ++k)
-    top_min = std::min(top_min, model.rigid.y[1] + model.rigid_contour_offset[static_cast<std::size_t>(k)].y());
+    top_min = std::min(
+        top_min, model.rigid.y[1] + model.rigid_contour_offset[static_cast<std::size_t>(k)].y());
   for (int k = model.bodies[0].contour_begin; k < model.bodies[0].contour_end; ++k)
-    bottom_max = std::max(bottom_max, model.rigid.y[0] + model.rigid_contour_offset[static_cast<std::size_t>(k)].y());
+    bottom_max = std::max(
+        bottom_max, model.rigid.y[0] + model.rigid_contour_offset[static_cast<std::size_t>(k)].y());
   for (std::size_t i = 0; i < model.node_count(); ++i) {
     EXPECT_LT(model.nodes.ref_y[i], top_min);
     EXPECT_GT(model.nodes.ref_y[i], bottom_max);
@@ -150,18 +155,26 @@ TEST(Scenario, ErrorsNameFileLineAndKey) {
     std::string from, to, expected;
   };
   const Case cases[] = {
-      {"duration = 0.05", "duration = -1", "bad.toml:4: key 'time.duration': expected a positive number"},
+      {"duration = 0.05", "duration = -1",
+       "bad.toml:4: key 'time.duration': expected a positive number"},
       {"duration = 0.05", "duration = \"long\"", "key 'time.duration': expected a number"},
       {"duration = 0.05", "", "key 'time.duration': required number is missing"},
-      {"poisson = 0.3", "poisson = 0.5", "key 'materials[0].poisson': expected a number in (-1, 0.5)"},
+      {"poisson = 0.3", "poisson = 0.5",
+       "key 'materials[0].poisson': expected a number in (-1, 0.5)"},
       {"young = 10.0", "young = 0.0", "key 'materials[0].young': expected a positive number"},
       {"radius = 0.5", "radius = 0.5\nradiuss = 1", "key 'grains[0].radiuss': unknown key"},
-      {"material = \"soft\"\nvelocity", "material = \"rock\"\nvelocity", "key 'grains[0].material': unknown material 'rock'"},
-      {"cohesion = 0.5", "cohesion = -0.5", "key 'contact_laws[1].cohesion': expected a number >= 0"},
-      {"normal_stiffness = 1000.0\nfriction", "normal_stiffness = 0.0\nfriction", "key 'contact_laws[0].normal_stiffness': expected a positive number"},
-      {"[[contact_laws]]\nmaterials = [\"hard\", \"hard\"]\nlaw = \"frictionless\"\nnormal_stiffness = 1000.0", "", "no contact law for materials 'hard' and 'hard'"},
+      {"material = \"soft\"\nvelocity", "material = \"rock\"\nvelocity",
+       "key 'grains[0].material': unknown material 'rock'"},
+      {"cohesion = 0.5", "cohesion = -0.5",
+       "key 'contact_laws[1].cohesion': expected a number >= 0"},
+      {"normal_stiffness = 1000.0\nfriction", "normal_stiffness = 0.0\nfriction",
+       "key 'contact_laws[0].normal_stiffness': expected a positive number"},
+      {"[[contact_laws]]\nmaterials = [\"hard\", \"hard\"]\nlaw = "
+       "\"frictionless\"\nnormal_stiffness = 1000.0",
+       "", "no contact law for materials 'hard' and 'hard'"},
       {"law = \"coulomb\"", "law = \"sticky\"", "key 'contact_laws[0].law': expected one of"},
-      {"node_spacing = 0.15", "node_spacing = [1]", "key 'discretization.node_spacing': expected a number"},
+      {"node_spacing = 0.15", "node_spacing = [1]",
+       "key 'discretization.node_spacing': expected a number"},
   };
   for (const Case& c : cases) {
     const std::string what = error_of(replace(kValid, c.from, c.to));

@@ -20,16 +20,19 @@ inline MaterialDef rigid_material(const std::string& name = "steel", double dens
 
 inline MaterialPairTable single_law(const Model& model, const ContactLawParams& law) {
   std::vector<std::string> names;
-  for (const MaterialDef& m : model.material_defs) names.push_back(m.name);
+  for (const MaterialDef& m : model.material_defs)
+    names.push_back(m.name);
   MaterialPairTable table(names);
   for (int a = 0; a < table.material_count(); ++a)
-    for (int b = a; b < table.material_count(); ++b) table.set(a, b, law);
+    for (int b = a; b < table.material_count(); ++b)
+      table.set(a, b, law);
   return table;
 }
 
 // Fixes every degree of freedom of a rigid body (velocity 0).
 inline void fix_rigid(Model& model, BodyId body) {
-  RigidDrive& d = model.rigid.drive[static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(body)].rigid_index)];
+  RigidDrive& d = model.rigid.drive[static_cast<std::size_t>(
+      model.bodies[static_cast<std::size_t>(body)].rigid_index)];
   for (int k = 0; k < 3; ++k) {
     d.mode[k] = DriveMode::velocity;
     d.velocity[k] = PiecewiseLinear::constant(0.0);
@@ -37,7 +40,8 @@ inline void fix_rigid(Model& model, BodyId body) {
 }
 
 inline RigidDrive& drive_of(Model& model, BodyId body) {
-  return model.rigid.drive[static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(body)].rigid_index)];
+  return model.rigid
+      .drive[static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(body)].rigid_index)];
 }
 
 }  // namespace sg::scenes

@@ -7,8 +7,9 @@
 
 namespace sg::scenes {
 
-inline MaterialDef elastic_material(MaterialLaw law = MaterialLaw::neo_hookean, double damping = 0.0,
-                                    double poisson = 0.3, double young = 10.0) {
+inline MaterialDef elastic_material(MaterialLaw law = MaterialLaw::neo_hookean,
+                                    double damping = 0.0, double poisson = 0.3,
+                                    double young = 10.0) {
   MaterialDef m;
   m.name = "grain";
   m.law = law;

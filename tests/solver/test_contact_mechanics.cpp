@@ -29,7 +29,9 @@ BlockOnPlane block_on_plane(double h, double penetration) {
   const MaterialId m = s.model.add_material(scenes::rigid_material());
   s.plane = s.model.add_rigid_body("plane", make_rectangle(Vec2(-2, -1), Vec2(2, 0), h), m);
   s.block = s.model.add_rigid_body(
-      "block", make_rectangle(Vec2(-0.5 + 0.5 * h, -penetration), Vec2(0.5 + 0.5 * h, 0.5 - penetration), h), m);
+      "block",
+      make_rectangle(Vec2(-0.5 + 0.5 * h, -penetration), Vec2(0.5 + 0.5 * h, 0.5 - penetration), h),
+      m);
   scenes::fix_rigid(s.model, s.plane);
   RigidDrive& d = scenes::drive_of(s.model, s.block);
   d.mode[1] = DriveMode::velocity;
@@ -108,8 +110,10 @@ ContactLawParams cohesive(double strength) {
 double peak_bond_force(int direction, double h, double strength) {
   Model model;
   const MaterialId m = model.add_material(scenes::rigid_material());
-  const BodyId lower = model.add_rigid_body("lower", make_rectangle(Vec2(-0.5, -0.5), Vec2(0.5, 0), h), m);
-  const BodyId upper = model.add_rigid_body("upper", make_rectangle(Vec2(-0.5, 0), Vec2(0.5, 0.5), h), m);
+  const BodyId lower =
+      model.add_rigid_body("lower", make_rectangle(Vec2(-0.5, -0.5), Vec2(0.5, 0), h), m);
+  const BodyId upper =
+      model.add_rigid_body("upper", make_rectangle(Vec2(-0.5, 0), Vec2(0.5, 0.5), h), m);
   scenes::fix_rigid(model, lower);
   scenes::fix_rigid(model, upper);
   // Slow enough that the gap grows by 1e-6 per step: 1% of the breaking gap sigma_c / (2 k_n).
@@ -151,8 +155,10 @@ TEST(Periodicity, ContactAcrossTheSeamGivesTheSameForcesAsAwayFromIt) {
     model.x_max = 10.0;
     const MaterialId m = model.add_material(scenes::rigid_material());
     // A square straddling x = offset and a square below it, slightly interpenetrating.
-    const BodyId a = model.add_rigid_body("a", make_rectangle(Vec2(offset - 0.5, 0), Vec2(offset + 0.5, 1), 0.1), m);
-    const BodyId b = model.add_rigid_body("b", make_rectangle(Vec2(offset - 0.3, -1.0 + 0.01), Vec2(offset + 0.7, 0.01), 0.1), m);
+    const BodyId a = model.add_rigid_body(
+        "a", make_rectangle(Vec2(offset - 0.5, 0), Vec2(offset + 0.5, 1), 0.1), m);
+    const BodyId b = model.add_rigid_body(
+        "b", make_rectangle(Vec2(offset - 0.3, -1.0 + 0.01), Vec2(offset + 0.7, 0.01), 0.1), m);
     scenes::fix_rigid(model, a);
     scenes::fix_rigid(model, b);
     ContactSettings settings;

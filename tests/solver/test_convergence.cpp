@@ -20,7 +20,8 @@ namespace sg {
 namespace {
 
 double exact_radial_displacement(double r, double a, double beta, const MaterialParams& m) {
-  const double c = beta * a * a * (4 * m.lambda + 6 * m.mu) / (16 * (m.lambda + m.mu) * (m.lambda + 2 * m.mu));
+  const double c =
+      beta * a * a * (4 * m.lambda + 6 * m.mu) / (16 * (m.lambda + m.mu) * (m.lambda + 2 * m.mu));
   return c * r - beta * r * r * r / (8 * (m.lambda + 2 * m.mu));
 }
 
@@ -40,8 +41,10 @@ double solve_and_measure(double h) {
     for (auto k = model.gauss_rows.offset[static_cast<std::size_t>(g)];
          k < model.gauss_rows.offset[static_cast<std::size_t>(g) + 1]; ++k) {
       const auto j = static_cast<std::size_t>(model.gauss_rows.node[static_cast<std::size_t>(k)]);
-      load_x[j] += w * model.gauss_rows.value[static_cast<std::size_t>(k)] * m.density * beta * x.x();
-      load_y[j] += w * model.gauss_rows.value[static_cast<std::size_t>(k)] * m.density * beta * x.y();
+      load_x[j] +=
+          w * model.gauss_rows.value[static_cast<std::size_t>(k)] * m.density * beta * x.x();
+      load_y[j] +=
+          w * model.gauss_rows.value[static_cast<std::size_t>(k)] * m.density * beta * x.y();
     }
   }
   // Dynamic relaxation: v <- (1 - c dt) v + dt f / m with c ~ 2 omega_min (critical damping of
@@ -52,7 +55,8 @@ double solve_and_measure(double h) {
   const double c = 2.0 * 2.5 * std::sqrt(m.mu / m.density) / radius;
   NodeState& s = model.nodes;
   double load_norm = 0.0;
-  for (std::size_t i = 0; i < n; ++i) load_norm += load_x[i] * load_x[i] + load_y[i] * load_y[i];
+  for (std::size_t i = 0; i < n; ++i)
+    load_norm += load_x[i] * load_x[i] + load_y[i] * load_y[i];
   load_norm = std::sqrt(load_norm);
   for (int it = 0; it < 200000; ++it) {
     for (std::size_t i = 0; i < n; ++i) {
@@ -83,7 +87,8 @@ double solve_and_measure(double h) {
       u += model.gauss_rows.value[static_cast<std::size_t>(k)] * Vec2(s.ux[j], s.uy[j]);
     }
     const double r = x.norm();
-    const Vec2 exact = r > 0 ? Vec2(exact_radial_displacement(r, radius, beta, m) / r * x) : Vec2(0, 0);
+    const Vec2 exact =
+        r > 0 ? Vec2(exact_radial_displacement(r, radius, beta, m) / r * x) : Vec2(0, 0);
     const double w = model.gauss_weight[static_cast<std::size_t>(g)];
     error2 += w * (u - exact).squaredNorm();
     norm2 += w * exact.squaredNorm();
@@ -94,7 +99,8 @@ double solve_and_measure(double h) {
 TEST(Convergence, DiscUnderRadialBodyForceConvergesAtSecondOrder) {
   const double spacings[3] = {0.2, 0.1, 0.05};
   double errors[3];
-  for (int i = 0; i < 3; ++i) errors[i] = solve_and_measure(spacings[i]);
+  for (int i = 0; i < 3; ++i)
+    errors[i] = solve_and_measure(spacings[i]);
   const double order_1 = std::log(errors[0] / errors[1]) / std::log(2.0);
   const double order_2 = std::log(errors[1] / errors[2]) / std::log(2.0);
   std::printf("L2 displacement errors %.3e %.3e %.3e, observed orders %.2f %.2f\n", errors[0],

@@ -16,7 +16,9 @@
 namespace sg {
 namespace {
 
-double shear_wave_speed(const MaterialParams& m) { return std::sqrt(m.mu / m.density); }
+double shear_wave_speed(const MaterialParams& m) {
+  return std::sqrt(m.mu / m.density);
+}
 
 // The lowest non-rigid mode of a free disc (ovalling, n = 2) has omega a / c_s ~ 2.5 for
 // nu = 0.3 (see test_vibration.cpp for the exact value); periods are counted with it.
@@ -98,8 +100,8 @@ TEST(Energy, DampedGrainLosesEnergyMonotonicallyAndTheLedgerAccountsForIt) {
 }
 
 TEST(Momentum, FreeSpinningDeformedGrainConservesLinearAndAngularMomentum) {
-  Model model = scenes::single_disc(scenes::elastic_material(MaterialLaw::neo_hookean, 0.02),
-                                    0.5, 0.08);
+  Model model =
+      scenes::single_disc(scenes::elastic_material(MaterialLaw::neo_hookean, 0.02), 0.5, 0.08);
   Mat2 f;
   f << 1.03, 0.02, 0.0, 0.98;
   set_affine_deformation(model, 0, f);
@@ -108,7 +110,8 @@ TEST(Momentum, FreeSpinningDeformedGrainConservesLinearAndAngularMomentum) {
   const double l0 = angular_momentum(model);
   const StableStep stable = estimate_stable_time_step(model, 0.8);
   ExplicitSolver solver(model);
-  for (int s = 0; s < 2000; ++s) solver.step(stable.dt);
+  for (int s = 0; s < 2000; ++s)
+    solver.step(stable.dt);
   // Round-off: ~1e-16 per operation, accumulated over 2000 steps and ~300 nodes.
   EXPECT_NEAR((linear_momentum(model) - p0).norm(), 0.0, 1e-12 * p0.norm());
   EXPECT_NEAR(angular_momentum(model), l0, 1e-11 * std::abs(l0));
@@ -119,14 +122,15 @@ TEST(ObjectiveDamping, SpinningUndeformedGrainKeepsItsKineticEnergy) {
   // Slow spin (centrifugal strain rho omega^2 a^2 / E ~ 2e-4) over two full turns with
   // strong damping: the kinetic energy stays; alpha K0 v would dissipate most of it.
   const double omega = 0.2;
-  Model model = scenes::single_disc(scenes::elastic_material(MaterialLaw::neo_hookean, 0.05),
-                                    0.5, 0.08);
+  Model model =
+      scenes::single_disc(scenes::elastic_material(MaterialLaw::neo_hookean, 0.05), 0.5, 0.08);
   set_rigid_velocity(model, 0, Vec2(0, 0), omega);
   const double k0 = kinetic_energy(model);
   const StableStep stable = estimate_stable_time_step(model, 0.8);
   ExplicitSolver solver(model);
   const long steps = std::lround(2.0 * 2.0 * std::numbers::pi / omega / stable.dt);
-  for (long s = 0; s < steps; ++s) solver.step(stable.dt);
+  for (long s = 0; s < steps; ++s)
+    solver.step(stable.dt);
   const double k1 = kinetic_energy(model);
   std::printf("spin: K1/K0 - 1 = %.3e, dissipated/K0 = %.3e\n", k1 / k0 - 1,
               solver.state().energy.damping_dissipated / k0);
@@ -136,9 +140,8 @@ TEST(ObjectiveDamping, SpinningUndeformedGrainKeepsItsKineticEnergy) {
 
 TEST(StableStep, EstimateIsBelowTheWaveSpeedBoundAndSeparatesStableFromUnstable) {
   for (double alpha : {0.0, 0.02}) {
-    Model model = scenes::single_disc(scenes::elastic_material(MaterialLaw::neo_hookean, alpha,
-                                                               0.495),
-                                      0.5, 0.1);
+    Model model = scenes::single_disc(
+        scenes::elastic_material(MaterialLaw::neo_hookean, alpha, 0.495), 0.5, 0.1);
     const double omega = estimate_max_frequency(model, 0);
     EXPECT_LT(omega, wave_speed_frequency_bound(model, 0));
     const double dt_critical = critical_time_step(omega, alpha);
@@ -160,7 +163,8 @@ TEST(StableStep, EstimateIsBelowTheWaveSpeedBoundAndSeparatesStableFromUnstable)
       const double initial = largest();
       ExplicitSolver solver(m);
       try {
-        for (int s = 0; s < 3000; ++s) solver.step(factor * dt_critical);
+        for (int s = 0; s < 3000; ++s)
+          solver.step(factor * dt_critical);
       } catch (const Error&) {
         return 1e300;
       }
@@ -176,8 +180,7 @@ TEST(StableStep, EstimateIsBelowTheWaveSpeedBoundAndSeparatesStableFromUnstable)
 
 TEST(StableStep, DampingSetsTheLimitForThePapersParameters) {
   // DESIGN.md: E = 10, rho = 1, nu = 0.495, h ~ 0.12, alpha = 0.02 gives xi ~ 3 and dt ~ 1e-3.
-  Model model = scenes::single_disc(scenes::elastic_material(MaterialLaw::neo_hookean, 0.02,
-                                                             0.495),
+  Model model = scenes::single_disc(scenes::elastic_material(MaterialLaw::neo_hookean, 0.02, 0.495),
                                     0.5, 0.12);
   const StableStep s = estimate_stable_time_step(model, 1.0);
   EXPECT_TRUE(s.damping_limited);
@@ -189,7 +192,8 @@ TEST(Threads, OneAndTwoThreadsGiveBitwiseIdenticalTrajectories) {
   auto run = [](int threads) {
     omp_set_num_threads(threads);
     Model model;
-    const MaterialId m = model.add_material(scenes::elastic_material(MaterialLaw::neo_hookean, 0.02));
+    const MaterialId m =
+        model.add_material(scenes::elastic_material(MaterialLaw::neo_hookean, 0.02));
     for (int k = 0; k < 12; ++k) {
       const BodyId b = scenes::add_disc(model, m, Vec2(1.2 * k, 0.1 * (k % 3)), 0.5 + 0.02 * k, 0.1,
                                         "g" + std::to_string(k));
@@ -201,7 +205,8 @@ TEST(Threads, OneAndTwoThreadsGiveBitwiseIdenticalTrajectories) {
     model.gravity = Vec2(0, -1);
     const StableStep stable = estimate_stable_time_step(model, 0.8);
     ExplicitSolver solver(model);
-    for (int s = 0; s < 300; ++s) solver.step(stable.dt);
+    for (int s = 0; s < 300; ++s)
+      solver.step(stable.dt);
     return std::make_pair(model.nodes, solver.state().energy);
   };
   const auto [one, e1] = run(1);
@@ -219,7 +224,8 @@ TEST(Diagnosis, ExplodingStepNamesBodyNodeAndStep) {
     model.nodes.ux[i] = 0.01 * std::sin(1.7 * static_cast<double>(i));
   ExplicitSolver solver(model);
   try {
-    for (int s = 0; s < 1000; ++s) solver.step(1.0);  // far above the stable step
+    for (int s = 0; s < 1000; ++s)
+      solver.step(1.0);  // far above the stable step
     FAIL() << "no error";
   } catch (const Error& e) {
     const std::string what = e.what();

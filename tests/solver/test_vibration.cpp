@@ -29,7 +29,9 @@ struct Radial {
   double u, du, v, dv;  // U, U', V, V' at r for one potential with unit amplitude
 };
 
-double bessel(int n, double x) { return std::cyl_bessel_j(static_cast<double>(n), x); }
+double bessel(int n, double x) {
+  return std::cyl_bessel_j(static_cast<double>(n), x);
+}
 double bessel_d1(int n, double x) {
   return n == 0 ? -bessel(1, x) : 0.5 * (bessel(n - 1, x) - bessel(n + 1, x));
 }
@@ -40,12 +42,14 @@ double bessel_d2(int n, double x) {
 
 // Potential phi = J_n(h r): f = J_n(h r), g = 0.
 Radial from_phi(int n, double h, double r) {
-  const double f = bessel(n, h * r), df = h * bessel_d1(n, h * r), ddf = h * h * bessel_d2(n, h * r);
+  const double f = bessel(n, h * r), df = h * bessel_d1(n, h * r),
+               ddf = h * h * bessel_d2(n, h * r);
   return {df, ddf, -n * f / r, -n * (df / r - f / (r * r))};
 }
 // Potential psi = J_n(k r): f = 0, g = J_n(k r).
 Radial from_psi(int n, double k, double r) {
-  const double g = bessel(n, k * r), dg = k * bessel_d1(n, k * r), ddg = k * k * bessel_d2(n, k * r);
+  const double g = bessel(n, k * r), dg = k * bessel_d1(n, k * r),
+               ddg = k * k * bessel_d2(n, k * r);
   return {n * g / r, n * (dg / r - g / (r * r)), -dg, -ddg};
 }
 
@@ -74,8 +78,10 @@ double analytic_lowest_frequency(double radius, double lambda, double mu, double
         double lo = w1 - step, hi = w1;  // bisection
         for (int it = 0; it < 100; ++it) {
           const double mid = 0.5 * (lo + hi);
-          if ((d(lo) < 0) == (d(mid) < 0)) lo = mid;
-          else hi = mid;
+          if ((d(lo) < 0) == (d(mid) < 0))
+            lo = mid;
+          else
+            hi = mid;
         }
         best = std::min(best, 0.5 * (lo + hi));
         break;
@@ -116,25 +122,32 @@ TEST(Vibration, LowestNonRigidFrequencyOfADiscMatchesTheAnalyticValue) {
     add_body_internal_forces(model, 0, ux.data(), uy.data(), zero.data(), zero.data(), fxm.data(),
                              fym.data(), false);
     for (int r = 0; r < n; ++r) {
-      k(2 * r, c) = -(fxp[static_cast<std::size_t>(r)] - fxm[static_cast<std::size_t>(r)]) / (2 * eps);
-      k(2 * r + 1, c) = -(fyp[static_cast<std::size_t>(r)] - fym[static_cast<std::size_t>(r)]) / (2 * eps);
+      k(2 * r, c) =
+          -(fxp[static_cast<std::size_t>(r)] - fxm[static_cast<std::size_t>(r)]) / (2 * eps);
+      k(2 * r + 1, c) =
+          -(fyp[static_cast<std::size_t>(r)] - fym[static_cast<std::size_t>(r)]) / (2 * eps);
     }
   }
   // Symmetric up to the finite-difference error: the Galerkin stiffness is symmetric.
   EXPECT_LT((k - k.transpose()).norm(), 1e-6 * k.norm());
   Eigen::VectorXd inv_sqrt_m(dofs);
   for (int i = 0; i < n; ++i)
-    inv_sqrt_m(2 * i) = inv_sqrt_m(2 * i + 1) = 1.0 / std::sqrt(model.nodes.mass[static_cast<std::size_t>(i)]);
-  const Eigen::MatrixXd a = inv_sqrt_m.asDiagonal() * (0.5 * (k + k.transpose())) * inv_sqrt_m.asDiagonal();
+    inv_sqrt_m(2 * i) = inv_sqrt_m(2 * i + 1) =
+        1.0 / std::sqrt(model.nodes.mass[static_cast<std::size_t>(i)]);
+  const Eigen::MatrixXd a =
+      inv_sqrt_m.asDiagonal() * (0.5 * (k + k.transpose())) * inv_sqrt_m.asDiagonal();
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(a, Eigen::EigenvaluesOnly);
   const Eigen::VectorXd& lambda = eig.eigenvalues();
   // Three rigid modes (two translations, one rotation) at zero frequency.
-  for (int i = 0; i < 3; ++i) EXPECT_LT(std::abs(lambda(i)), 1e-6 * lambda(3)) << i;
+  for (int i = 0; i < 3; ++i)
+    EXPECT_LT(std::abs(lambda(i)), 1e-6 * lambda(3)) << i;
   const double omega_discrete = std::sqrt(lambda(3));
-  for (int i = 0; i < 10; ++i) std::printf("mode %d: omega %.5f\n", i, std::sqrt(std::max(0.0, lambda(i))));
-  std::printf("lowest non-rigid: discrete %.6f, analytic %.6f (omega a / c_s = %.4f), error %.3f%%\n",
-              omega_discrete, omega_exact, omega_exact * radius / std::sqrt(m.mu / m.density),
-              100 * (omega_discrete / omega_exact - 1));
+  for (int i = 0; i < 10; ++i)
+    std::printf("mode %d: omega %.5f\n", i, std::sqrt(std::max(0.0, lambda(i))));
+  std::printf(
+      "lowest non-rigid: discrete %.6f, analytic %.6f (omega a / c_s = %.4f), error %.3f%%\n",
+      omega_discrete, omega_exact, omega_exact * radius / std::sqrt(m.mu / m.density),
+      100 * (omega_discrete / omega_exact - 1));
   EXPECT_NEAR(omega_discrete / omega_exact, 1.0, 0.02);  // issue requirement: 2%
   // The ovalling mode is doubly degenerate (cos 2t and sin 2t).
   EXPECT_NEAR(std::sqrt(lambda(4)) / omega_discrete, 1.0, 0.01);
