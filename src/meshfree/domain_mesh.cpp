@@ -8,14 +8,11 @@
 //      edges they would encroach. The size bound is set from the contour edges so that a
 //      contour sampled at about h is kept as it is (CGAL User Manual, "2D Conforming
 //      Triangulations and Meshes", §Meshes: criteria);
-//   3. Lloyd smoothing (lloyd_optimize_mesh_2) moves every unconstrained vertex towards the
-//      centroid of its Voronoi cell, which evens out the spacing the refinement left
-//      (same chapter, §Optimization of Meshes with Lloyd);
+//   3. Lloyd smoothing moves every interior node to the centroid of its Voronoi cell, which
+//      evens out the spacing the refinement left; our own loop, not lloyd_optimize_mesh_2,
+//      for determinism (see lloyd_step);
 //   4. the output is read back in a canonical order: boundary by walking the domain boundary
 //      counter-clockwise from boundary[0], interior sorted by position, triangles sorted.
-// Rejected alternative: our own Lloyd loop on a re-triangulated point cloud (the provisional
-// version) re-filters triangles by centroid-in-polygon tests and can lose quality near
-// concave corners; CGAL's optimizer keeps the constraints and the domain marks consistent.
 //
 // CGAL stays in this file only: including the mesher costs ~20 s and ~1 GB to compile.
 #pragma GCC diagnostic push
@@ -31,7 +28,6 @@
 #include <CGAL/Delaunay_mesher_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
-#include <CGAL/lloyd_optimize_mesh_2.h>
 #pragma GCC diagnostic pop
 
 #include <algorithm>
@@ -53,12 +49,14 @@ constexpr double kShapeBound = 0.125;
 // The size bound limits the longest edge of a triangle. Refinement stops with edges between
 // about 0.6 and 1 times the bound; 1.3 times the contour spacing gives interior spacing close
 // to h after smoothing and leaves triangles with one contour edge (length ~h) alone.
-constexpr double kSizeBoundFactor = 1.3;
+constexpr double kSizeBoundFactor = 1.5;
 // Contour edges up to this multiple of h still set the size bound; longer edges are split by
 // the mesher (their midpoints become boundary nodes) instead of coarsening the whole body.
 constexpr double kLongestContourEdgeKept = 1.5;
 // Graded spacing grows by this much per unit distance from the contour (a gradation below 1
-// keeps neighbouring triangles of similar size, hence well shaped).
+// keeps neighbouring triangles of similar size, hence well shaped), starting one spacing
+// inside so that the first layer of triangles, which carries the contact nodes' MLS
+// neighbourhoods, stays as fine as in a uniform mesh.
 constexpr double kGradingSlope = 0.5;
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -126,26 +124,30 @@ class CappedContourDistance {
 };
 
 // Delaunay_mesh_size_criteria_2 with a size bound that may grow away from the contour:
-// local bound = min(grading * s, s + slope * distance to contour), s the bound at the contour.
+// local bound = min(grading * s, s + slope * max(0, distance to contour - h)), s the bound at
+// the contour.
 // Same quality measure as CGAL's (squared sine of the smallest angle, longest edge over the
 // bound), so CGAL's queue ordering and termination argument are unchanged.
 class GradedSizeCriteria : public CGAL::Delaunay_mesh_size_criteria_2<Cdt> {
  public:
   using Uniform = CGAL::Delaunay_mesh_size_criteria_2<Cdt>;
 
-  GradedSizeCriteria(double size_bound, double grading, const CappedContourDistance* distance)
+  GradedSizeCriteria(double size_bound, double grading, double ramp_start,
+                     const CappedContourDistance* distance)
       : CGAL::Delaunay_mesh_criteria_2<Cdt>(kShapeBound),
         Uniform(kShapeBound, size_bound),
         grading_(grading),
+        ramp_start_(ramp_start),
         distance_(distance) {}
 
   class Is_bad : public Uniform::Is_bad {
    public:
-    Is_bad(const Uniform::Is_bad& uniform, double size_bound, double grading,
+    Is_bad(const Uniform::Is_bad& uniform, double size_bound, double grading, double ramp_start,
            const CappedContourDistance* distance)
         : Uniform::Is_bad(uniform),
           size_bound_(size_bound),
           grading_(grading),
+          ramp_start_(ramp_start),
           distance_(distance) {}
 
     using Uniform::Is_bad::operator();
@@ -157,7 +159,8 @@ class GradedSizeCriteria : public CGAL::Delaunay_mesh_size_criteria_2<Cdt> {
       double local_bound = size_bound_;
       if (grading_ > 1.0) {
         const double d = (*distance_)((a + b + c) / 3.0);
-        local_bound = std::min(grading_ * size_bound_, size_bound_ + kGradingSlope * d);
+        local_bound = std::min(grading_ * size_bound_,
+                               size_bound_ + kGradingSlope * std::max(0.0, d - ramp_start_));
       }
       std::array<double, 3> squared_edge = {(b - c).squaredNorm(), (c - a).squaredNorm(),
                                             (a - b).squaredNorm()};
@@ -176,15 +179,17 @@ class GradedSizeCriteria : public CGAL::Delaunay_mesh_size_criteria_2<Cdt> {
    private:
     double size_bound_;
     double grading_;
+    double ramp_start_;
     const CappedContourDistance* distance_;
   };
 
   Is_bad is_bad_object() const {
-    return Is_bad(Uniform::is_bad_object(), size_bound(), grading_, distance_);
+    return Is_bad(Uniform::is_bad_object(), size_bound(), grading_, ramp_start_, distance_);
   }
 
  private:
   double grading_;
+  double ramp_start_;                      // distance from the contour where the size grows
   const CappedContourDistance* distance_;  // null when grading == 1
 };
 
@@ -235,6 +240,103 @@ Vec2 to_vec(const Point& p) {
   return Vec2(p.x(), p.y());
 }
 
+// Constrained Delaunay triangulation of given nodes: [0, boundary_count) the contour in order
+// (each edge a constraint), then the interior. Vertex info = node index; faces inside the
+// contour are marked in-domain. Built from scratch in node order, so the result depends on the
+// node positions and order only, never on where the allocator put CGAL's records.
+Cdt triangulate(const std::vector<Vec2>& nodes, int boundary_count, const std::string& body_name) {
+  Cdt cdt;
+  std::vector<Cdt::Vertex_handle> vertex;
+  vertex.reserve(nodes.size());
+  for (const Vec2& p : nodes) {
+    vertex.push_back(cdt.insert(Point(p.x(), p.y()),
+                                vertex.empty() ? Cdt::Face_handle() : vertex.back()->face()));
+    vertex.back()->info() = static_cast<int>(vertex.size()) - 1;
+  }
+  SG_INTERNAL_CHECK(cdt.number_of_vertices() == nodes.size(),
+                    "body '" << body_name << "': two nodes coincide");
+  const auto n = static_cast<std::size_t>(boundary_count);
+  for (std::size_t i = 0; i < n; ++i)
+    cdt.insert_constraint(vertex[i], vertex[(i + 1) % n]);
+  const std::vector<Point> no_seeds;  // the domain is what the constraints enclose
+  Mesher::mark_facets(cdt, no_seeds.begin(), no_seeds.end());
+  return cdt;
+}
+
+// Part of `polygon` on the left of the directed line a->b (Sutherland-Hodgman, one edge).
+std::vector<Vec2> clip_left_of(const std::vector<Vec2>& polygon, const Vec2& a, const Vec2& b) {
+  std::vector<Vec2> kept;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Vec2& p = polygon[i];
+    const Vec2& q = polygon[(i + 1) % polygon.size()];
+    const double sp = cross(b - a, p - a), sq = cross(b - a, q - a);
+    if (sp >= 0.0) kept.push_back(p);
+    if ((sp >= 0.0) != (sq >= 0.0)) kept.push_back(p + (q - p) * (sp / (sp - sq)));
+  }
+  return kept;
+}
+
+// One Lloyd iteration (Du, Faber & Gunzburger, SIAM Review 41, 1999): every interior node
+// moves to the centroid of its Voronoi cell, the polygon through the circumcentres of its
+// incident triangles, clipped by the contour edges of its star where an obtuse triangle puts
+// a circumcentre outside. All targets are computed on the same triangulation, then applied.
+// Written here rather than calling CGAL::lloyd_optimize_mesh_2: CGAL keeps its moving vertices
+// in a std::set ordered by address, so the order of its floating-point updates, hence the
+// last bits of the nodes, changed from one call to the next (measured: two calls on the
+// same ellipse gave 477 of 692 nodes different after 10 iterations).
+void lloyd_step(const Cdt& cdt, std::vector<Vec2>& nodes, int boundary_count,
+                const Polygon& contour) {
+  std::vector<Vec2> target = nodes;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    if (v->info() < boundary_count) continue;
+    std::vector<Vec2> cell;
+    std::vector<std::pair<Vec2, Vec2>> contour_edges;  // of the star, counter-clockwise
+    auto f = cdt.incident_faces(v);
+    const auto first = f;
+    do {
+      // An interior vertex only touches in-domain, finite faces.
+      const int j = f->index(v);
+      const Point c = cdt.circumcenter(f);
+      cell.emplace_back(c.x(), c.y());
+      if (f->is_constrained(j))
+        contour_edges.emplace_back(to_vec(f->vertex(Cdt::ccw(j))->point()),
+                                   to_vec(f->vertex(Cdt::cw(j))->point()));
+    } while (++f != first);
+    for (const auto& [a, b] : contour_edges)
+      cell = clip_left_of(cell, a, b);
+    // Centroid of a polygon from its signed-area decomposition.
+    double twice_area = 0.0;
+    Vec2 moment = Vec2::Zero();
+    for (std::size_t k = 0; k < cell.size(); ++k) {
+      const Vec2& p = cell[k];
+      const Vec2& q = cell[(k + 1) % cell.size()];
+      const double w = cross(p, q);
+      twice_area += w;
+      moment += w * (p + q);
+    }
+    if (!(twice_area > 0.0)) continue;
+    const Vec2 centroid = moment / (3.0 * twice_area);
+    // A cell reaching past a contour edge outside the star (deep concave notch) could pull
+    // a node out of the body: such a node stays where it is for this iteration.
+    if (contains(contour, centroid)) target[static_cast<std::size_t>(v->info())] = centroid;
+  }
+  nodes = std::move(target);
+}
+
+// Interior nodes sorted along the longer side of the bounding box: a canonical order that
+// keeps neighbours close in the node arrays, also for long strips.
+void sort_interior(std::vector<Vec2>& nodes, int boundary_count) {
+  Vec2 lower = nodes.front(), upper = nodes.front();
+  for (const Vec2& p : nodes) {
+    lower = lower.cwiseMin(p);
+    upper = upper.cwiseMax(p);
+  }
+  const int major = (upper - lower).x() >= (upper - lower).y() ? 0 : 1;
+  const int minor = 1 - major;
+  std::sort(nodes.begin() + boundary_count, nodes.end(), [&](const Vec2& a, const Vec2& b) {
+    return a[major] != b[major] ? a[major] < b[major] : a[minor] < b[minor];
+  });
+}
 }  // namespace
 
 DomainMesh mesh_domain(const Polygon& boundary, const DomainMeshParams& params,
@@ -263,19 +365,13 @@ DomainMesh mesh_domain(const Polygon& boundary, const DomainMeshParams& params,
   const double grading = params.boundary_grading;
   std::optional<CappedContourDistance> distance;
   if (grading > 1.0)
-    distance.emplace(boundary, (grading - 1.0) * size_bound / kGradingSlope, longest_edge);
+    distance.emplace(boundary, h + (grading - 1.0) * size_bound / kGradingSlope, longest_edge);
   // Without seeds, the mesher's domain is every face not connected to the infinite face
   // without crossing a constraint: the inside of the contour.
-  Mesher mesher(cdt, GradedSizeCriteria(size_bound, grading, distance ? &*distance : nullptr));
+  Mesher mesher(cdt, GradedSizeCriteria(size_bound, grading, h, distance ? &*distance : nullptr));
   mesher.refine_mesh();
-  // Lloyd moves only vertices without incident constraints (Mesh_global_optimizer_2), so the
-  // contour stays fixed; it re-marks the domain after each move. max_iteration_number = 0
-  // would mean "until convergence (<= 1000)", hence the guard.
-  if (params.smoothing_iterations > 0)
-    CGAL::lloyd_optimize_mesh_2(
-        cdt, CGAL::parameters::max_iteration_number = params.smoothing_iterations);
 
-  // Temporary ids in CGAL's vertex order, then the final numbering.
+  // Temporary ids in CGAL's vertex order.
   std::vector<Cdt::Vertex_handle> vertex;
   vertex.reserve(cdt.number_of_vertices());
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
@@ -302,16 +398,15 @@ DomainMesh mesh_domain(const Polygon& boundary, const DomainMeshParams& params,
     }
   }
 
-  constexpr int kUnnumbered = -1;
-  std::vector<int> node_of(vertex_count, kUnnumbered);
   DomainMesh mesh;
+  std::vector<bool> on_boundary(vertex_count, false);
   mesh.nodes.reserve(vertex_count);
   int v = contour.front()->info();
   do {
     const auto vi = static_cast<std::size_t>(v);
-    SG_INTERNAL_CHECK(node_of[vi] == kUnnumbered && next_on_boundary[vi] >= 0,
+    SG_INTERNAL_CHECK(!on_boundary[vi] && next_on_boundary[vi] >= 0,
                       "body '" << body_name << "': the meshed boundary is not a closed loop");
-    node_of[vi] = static_cast<int>(mesh.nodes.size());
+    on_boundary[vi] = true;
     mesh.nodes.push_back(to_vec(vertex[vi]->point()));
     v = next_on_boundary[vi];
   } while (v != contour.front()->info());
@@ -320,35 +415,23 @@ DomainMesh mesh_domain(const Polygon& boundary, const DomainMeshParams& params,
                     "body '" << body_name << "': the meshed boundary has " << boundary_edges
                              << " edges but its loop from boundary[0] only "
                              << mesh.boundary_count);
-
-  // Interior nodes sorted along the longer side of the bounding box: a deterministic order
-  // that does not depend on CGAL's memory layout, and that keeps neighbours close in the node
-  // arrays of long strips.
-  Vec2 lower = boundary.front(), upper = boundary.front();
-  for (const Vec2& p : boundary) {
-    lower = lower.cwiseMin(p);
-    upper = upper.cwiseMax(p);
-  }
-  const int major = (upper - lower).x() >= (upper - lower).y() ? 0 : 1;
-  std::vector<int> interior;
   for (std::size_t i = 0; i < vertex_count; ++i)
-    if (node_of[i] == kUnnumbered) interior.push_back(static_cast<int>(i));
-  auto key = [&](int i) {
-    const Point& p = vertex[static_cast<std::size_t>(i)]->point();
-    return major == 0 ? std::pair(p.x(), p.y()) : std::pair(p.y(), p.x());
-  };
-  std::sort(interior.begin(), interior.end(), [&](int a, int b) { return key(a) < key(b); });
-  for (int i : interior) {
-    node_of[static_cast<std::size_t>(i)] = static_cast<int>(mesh.nodes.size());
-    mesh.nodes.push_back(to_vec(vertex[static_cast<std::size_t>(i)]->point()));
-  }
+    if (!on_boundary[i]) mesh.nodes.push_back(to_vec(vertex[i]->point()));
+  sort_interior(mesh.nodes, mesh.boundary_count);
 
-  // CGAL faces are counter-clockwise; rotating a triple keeps its orientation.
-  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+  // The boundary loop, Steiner points included, is the contour from here on.
+  const Polygon domain(mesh.nodes.begin(), mesh.nodes.begin() + mesh.boundary_count);
+  for (int iteration = 0; iteration < params.smoothing_iterations; ++iteration)
+    lloyd_step(triangulate(mesh.nodes, mesh.boundary_count, body_name), mesh.nodes,
+               mesh.boundary_count, domain);
+  if (params.smoothing_iterations > 0) sort_interior(mesh.nodes, mesh.boundary_count);
+
+  // Triangles of the final nodes. CGAL faces are counter-clockwise; rotating a triple keeps
+  // its orientation.
+  const Cdt final_cdt = triangulate(mesh.nodes, mesh.boundary_count, body_name);
+  for (auto f = final_cdt.finite_faces_begin(); f != final_cdt.finite_faces_end(); ++f) {
     if (!f->is_in_domain()) continue;
-    std::array<int, 3> t;
-    for (int k = 0; k < 3; ++k)
-      t[static_cast<std::size_t>(k)] = node_of[static_cast<std::size_t>(f->vertex(k)->info())];
+    std::array<int, 3> t = {f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
     std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
     mesh.triangles.push_back(t);
   }
