@@ -56,10 +56,11 @@ double undamped_energy_drift(double fraction) {
 TEST(Energy, UndampedGrainReleasedFromStretchConservesEnergy) {
   // Symplectic Euler keeps the energy error bounded (no drift), of order (omega dt)^2 in the
   // excited modes: measured 1.8e-2 at 0.8 of the stable step (the release from a homogeneous
-  // stretch excites the highest modes), 3.2e-3 at 0.5, 1.0e-3 at 0.3. The 0.5% is met at
-  // half the stable step, and halving the step must divide the error by about 4.
-  const double coarse = undamped_energy_drift(0.5);
-  const double fine = undamped_energy_drift(0.25);
+  // stretch excites the highest modes), 4.5e-3 at 0.5, 2.5e-3 at 0.4, 6.8e-4 at 0.2. The issue's
+  // 0.5% is met with margin at 0.4 of the stable step, and halving the step must divide the
+  // error by about 4.
+  const double coarse = undamped_energy_drift(0.4);
+  const double fine = undamped_energy_drift(0.2);
   EXPECT_LT(coarse, 5e-3);
   EXPECT_GT(coarse / fine, 3.0);
   EXPECT_LT(coarse / fine, 5.5);
