@@ -93,26 +93,27 @@ Vec2 node_velocity(const Model& model, int node) {
   return v;
 }
 
-Mat2 node_deformation_gradient(const Model& model, int node) {
-  const int base = model.bodies[static_cast<std::size_t>(body_of_node(model, node))].node_begin;
+namespace {
+// F = I + sum_J u_J (x) grad N_J over one row of `rows`, node indices offset by `base`.
+Mat2 row_deformation_gradient(const Model& model, const ShapeRows& rows, std::size_t point,
+                              int base) {
   Mat2 f = Mat2::Identity();
-  for_row(model.node_rows, static_cast<std::size_t>(node), [&](std::size_t k) {
-    const auto j = static_cast<std::size_t>(base + model.node_rows.node[k]);
-    f += Vec2(model.nodes.ux[j], model.nodes.uy[j]) *
-         Vec2(model.node_rows.dndx[k], model.node_rows.dndy[k]).transpose();
+  for_row(rows, point, [&](std::size_t k) {
+    const auto j = static_cast<std::size_t>(base + rows.node[k]);
+    f += Vec2(model.nodes.ux[j], model.nodes.uy[j]) * Vec2(rows.dndx[k], rows.dndy[k]).transpose();
   });
   return f;
 }
+}  // namespace
+
+Mat2 node_deformation_gradient(const Model& model, int node) {
+  const int base = model.bodies[static_cast<std::size_t>(body_of_node(model, node))].node_begin;
+  return row_deformation_gradient(model, model.node_rows, static_cast<std::size_t>(node), base);
+}
 
 Mat2 gauss_deformation_gradient(const Model& model, BodyId body, int g) {
-  const int base = model.bodies[static_cast<std::size_t>(body)].node_begin;
-  Mat2 f = Mat2::Identity();
-  for_row(model.gauss_rows, static_cast<std::size_t>(g), [&](std::size_t k) {
-    const auto j = static_cast<std::size_t>(base + model.gauss_rows.node[k]);
-    f += Vec2(model.nodes.ux[j], model.nodes.uy[j]) *
-         Vec2(model.gauss_rows.dndx[k], model.gauss_rows.dndy[k]).transpose();
-  });
-  return f;
+  return row_deformation_gradient(model, model.gauss_rows, static_cast<std::size_t>(g),
+                                  model.bodies[static_cast<std::size_t>(body)].node_begin);
 }
 
 Vec2 gauss_reference_position(const Model& model, BodyId body, int g) {

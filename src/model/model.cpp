@@ -27,10 +27,7 @@ BodyId Model::add_deformable_body(const std::string& name, const Polygon& contou
 
 BodyId Model::add_deformable_body(const std::string& name, const BodyDiscretization& d,
                                   MaterialId material) {
-  SG_VERIFY(material >= 0 && static_cast<std::size_t>(material) < materials.size(),
-            "body '" << name << "': unknown material index " << material);
-  for (const Body& b : bodies)
-    SG_VERIFY(b.name != name, "body name '" << name << "' is used twice");
+  check_new_body(name, material);
   Body body;
   body.name = name;
   body.kind = BodyKind::deformable;
@@ -69,53 +66,31 @@ BodyId Model::add_deformable_body(const std::string& name, const BodyDiscretizat
   return static_cast<BodyId>(bodies.size() - 1);
 }
 
-BodyId Model::add_rigid_body(const std::string& name, const Polygon& contour, MaterialId material) {
+void Model::check_new_body(const std::string& name, MaterialId material) const {
   SG_VERIFY(material >= 0 && static_cast<std::size_t>(material) < materials.size(),
             "body '" << name << "': unknown material index " << material);
   for (const Body& b : bodies)
     SG_VERIFY(b.name != name, "body name '" << name << "' is used twice");
+}
+
+BodyId Model::add_rigid_body(const std::string& name, const Polygon& contour, MaterialId material) {
+  check_new_body(name, material);
   SG_VERIFY(contour.size() >= 3u,
             "body '" << name << "': a contour needs at least 3 points, got " << contour.size());
-  const double area = signed_area(contour);
   SG_VERIFY(!is_self_intersecting(contour), "body '" << name << "': contour is self-intersecting");
+  const double area = signed_area(contour);
   SG_VERIFY(area > 0.0, "body '" << name << "': contour must be counter-clockwise (signed area "
                                  << area << ")");
   const double density = materials[static_cast<std::size_t>(material)].density;
-  const Vec2 c = centroid(contour);
   Body body;
-  body.name = name;
-  body.kind = BodyKind::rigid;
-  body.material = material;
-  body.node_begin = body.node_end = body.boundary_end = static_cast<int>(nodes.size());
-  body.gauss_begin = body.gauss_end = static_cast<int>(gauss_weight.size());
-  body.triangle_begin = body.triangle_end = static_cast<int>(triangles.size());
-  body.contour_begin = static_cast<int>(contour_body.size());
-  body.contour_end = body.contour_begin + static_cast<int>(contour.size());
   body.reference_area = area;
-  body.rigid_index = static_cast<int>(rigid.size());
-  for (const Vec2& p : contour) {
-    rigid_contour_offset.push_back(p - c);
-    contour_body.push_back(static_cast<BodyId>(bodies.size()));
-  }
-  for (auto* a : {&rigid.x, &rigid.y, &rigid.theta, &rigid.vx, &rigid.vy, &rigid.omega, &rigid.fx,
-                  &rigid.fy, &rigid.torque, &rigid.mass, &rigid.inertia})
-    a->push_back(0.0);
-  const std::size_t r = rigid.size() - 1;
-  rigid.x[r] = c.x();
-  rigid.y[r] = c.y();
-  rigid.mass[r] = density * area;
-  rigid.inertia[r] = density * polar_second_moment(contour);
-  rigid.drive.emplace_back();
-  bodies.push_back(body);
-  return static_cast<BodyId>(bodies.size() - 1);
+  return append_rigid(body, name, contour, material, centroid(contour), density * area,
+                      density * polar_second_moment(contour));
 }
 
 BodyId Model::add_rigid_strip(const std::string& name, const Polygon& surface, MaterialId material,
                               double closing_shift_x, double mass, double inertia) {
-  SG_VERIFY(material >= 0 && static_cast<std::size_t>(material) < materials.size(),
-            "body '" << name << "': unknown material index " << material);
-  for (const Body& b : bodies)
-    SG_VERIFY(b.name != name, "body name '" << name << "' is used twice");
+  check_new_body(name, material);
   SG_VERIFY(surface.size() >= 2, "body '" << name << "': a strip needs at least 2 points");
   SG_VERIFY(closing_shift_x != 0.0,
             "body '" << name << "': a strip needs a closing shift (the period)");
@@ -126,6 +101,15 @@ BodyId Model::add_rigid_strip(const std::string& name, const Polygon& surface, M
     c += p;
   c /= static_cast<double>(surface.size());
   Body body;
+  body.open_contour = true;
+  body.closing_shift_x = closing_shift_x;
+  body.reference_area = mass / materials[static_cast<std::size_t>(material)].density;
+  return append_rigid(body, name, surface, material, c, mass, inertia);
+}
+
+BodyId Model::append_rigid(Body body, const std::string& name, const Polygon& points,
+                           MaterialId material, const Vec2& reference, double mass,
+                           double inertia) {
   body.name = name;
   body.kind = BodyKind::rigid;
   body.material = material;
@@ -133,21 +117,18 @@ BodyId Model::add_rigid_strip(const std::string& name, const Polygon& surface, M
   body.gauss_begin = body.gauss_end = static_cast<int>(gauss_weight.size());
   body.triangle_begin = body.triangle_end = static_cast<int>(triangles.size());
   body.contour_begin = static_cast<int>(contour_body.size());
-  body.contour_end = body.contour_begin + static_cast<int>(surface.size());
-  body.open_contour = true;
-  body.closing_shift_x = closing_shift_x;
-  body.reference_area = mass / materials[static_cast<std::size_t>(material)].density;
+  body.contour_end = body.contour_begin + static_cast<int>(points.size());
   body.rigid_index = static_cast<int>(rigid.size());
-  for (const Vec2& p : surface) {
-    rigid_contour_offset.push_back(p - c);
+  for (const Vec2& p : points) {
+    rigid_contour_offset.push_back(p - reference);
     contour_body.push_back(static_cast<BodyId>(bodies.size()));
   }
   for (auto* a : {&rigid.x, &rigid.y, &rigid.theta, &rigid.vx, &rigid.vy, &rigid.omega, &rigid.fx,
                   &rigid.fy, &rigid.torque, &rigid.mass, &rigid.inertia})
     a->push_back(0.0);
   const std::size_t r = rigid.size() - 1;
-  rigid.x[r] = c.x();
-  rigid.y[r] = c.y();
+  rigid.x[r] = reference.x();
+  rigid.y[r] = reference.y();
   rigid.mass[r] = mass;
   rigid.inertia[r] = inertia;
   rigid.drive.emplace_back();

@@ -138,6 +138,13 @@ struct Model {
                          double closing_shift_x, double mass, double inertia);
 
   std::size_t node_count() const { return nodes.size(); }
+
+ private:
+  void check_new_body(const std::string& name, MaterialId material) const;
+  BodyId append_rigid(Body body, const std::string& name, const Polygon& points,
+                      MaterialId material, const Vec2& reference, double mass, double inertia);
+
+ public:
   std::size_t contour_point_count() const { return contour_body.size(); }
   std::size_t gauss_point_count() const { return gauss_weight.size(); }
 };
