@@ -1,0 +1,83 @@
+// softgrain render RUN_DIR: PNG snapshots of a field (and an MP4 when ffmpeg is present).
+#include <iostream>
+
+#include "command_registry.h"
+#include "core/error.h"
+#include "render/run_folder.h"
+#include "render/snapshot_renderer.h"
+
+namespace sg::app {
+namespace {
+
+struct RenderArguments {
+  std::string run_dir;
+  std::string field = "von_mises";
+  std::string size = "1200x800";
+  std::vector<double> range;
+  std::string frames = "all";
+  bool no_movie = false;
+};
+
+std::pair<int, int> parse_size(const std::string& text) {
+  const auto x = text.find('x');
+  SG_VERIFY(x != std::string::npos, "--size '" << text << "': expected WxH, e.g. 1200x800");
+  try {
+    return {std::stoi(text.substr(0, x)), std::stoi(text.substr(x + 1))};
+  } catch (const std::exception&) {
+    SG_THROW("--size '" << text << "': expected WxH, e.g. 1200x800");
+  }
+}
+
+const Registration registration(
+    {"render",
+     [](CLI::App& app, const GlobalOptions&) {
+       auto args = std::make_shared<RenderArguments>();
+       CLI::App* cmd = app.add_subcommand(
+           "render", "Draw PNG snapshots of a run's fields into RUN_DIR/render/");
+       cmd->add_option("run_dir", args->run_dir, "run folder (holds fields.pvd)")->required();
+       cmd->add_option("--field", args->field,
+                       "von_mises | velocity | velocity_x | velocity_y | body | "
+                       "green_lagrange_norm | pressure | sigma_xx | sigma_yy | sigma_xy | "
+                       "displacement")
+           ->capture_default_str();
+       cmd->add_option("--size", args->size, "picture size WxH in pixels")->capture_default_str();
+       cmd->add_option("--range", args->range, "colour range MIN MAX (default: over all frames)")
+           ->expected(2);
+       cmd->add_option("--frames", args->frames, "all | last")
+           ->check(CLI::IsMember({"all", "last"}))
+           ->capture_default_str();
+       cmd->add_flag("--no-movie", args->no_movie, "do not make an MP4 even if ffmpeg is present");
+       return std::function<int()>([args] {
+         RenderOptions options;
+         options.field = args->field;
+         std::tie(options.width, options.height) = parse_size(args->size);
+         if (args->range.size() == 2)
+           options.range = std::make_pair(args->range[0], args->range[1]);
+         options.last_frame_only = args->frames == "last";
+         options.movie = !args->no_movie;
+         const std::filesystem::path dir(args->run_dir);
+         const RunScenario run = load_run_scenario(dir);
+         if (run.scenario) {
+           options.periodic = periodic_span(*run.scenario);
+           options.title = run.scenario->name;
+         } else {
+           options.title = std::filesystem::absolute(dir).lexically_normal().filename().string();
+           std::cerr << "note: " << run.note
+                     << "; periodic wrapping unknown, drawing positions as written\n";
+         }
+         const RenderResult r = render_run(dir, options);
+         std::cout << "render '" << options.field << "': " << r.images.size() << " picture"
+                   << (r.images.size() == 1 ? "" : "s") << " in " << (dir / "render").string()
+                   << "\n";
+         if (r.has_range)
+           std::cout << "  colour range [" << r.range_min << ", " << r.range_max << "]"
+                     << (options.range ? " (given)" : " (over all frames)") << "\n";
+         if (!r.movie.empty()) std::cout << "  movie: " << r.movie.string() << "\n";
+         if (!r.note.empty()) std::cout << "  note: " << r.note << "\n";
+         return 0;
+       });
+     },
+     40});
+
+}  // namespace
+}  // namespace sg::app

@@ -1,0 +1,51 @@
+#include "render/colormap.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sg {
+
+Rgb viridis(double t) {
+  // matplotlib's viridis at t = 0, 0.1, ..., 1, linearly interpolated (close to the full
+  // 256-entry table; the map's lightness is nearly linear in t).
+  static constexpr std::array<std::array<double, 3>, 11> kTable = {{
+      {0.267004, 0.004874, 0.329415},
+      {0.282623, 0.140926, 0.457517},
+      {0.253935, 0.265254, 0.529983},
+      {0.206756, 0.371758, 0.553117},
+      {0.163625, 0.471133, 0.558148},
+      {0.127568, 0.566949, 0.550556},
+      {0.134692, 0.658636, 0.517649},
+      {0.266941, 0.748751, 0.440573},
+      {0.477504, 0.821444, 0.318195},
+      {0.741388, 0.873449, 0.149561},
+      {0.993248, 0.906157, 0.143936},
+  }};
+  if (std::isnan(t)) return {0.6, 0.6, 0.6};
+  t = std::fmin(1.0, std::fmax(0.0, t));
+  const double x = t * 10.0;
+  const int i = std::min(9, static_cast<int>(x));
+  const double f = x - i;
+  const auto& a = kTable[static_cast<std::size_t>(i)];
+  const auto& b = kTable[static_cast<std::size_t>(i + 1)];
+  return {a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]), a[2] + f * (b[2] - a[2])};
+}
+
+Rgb category_colour(int k) {
+  static constexpr std::array<std::array<int, 3>, 10> kTableau = {{
+      {78, 121, 167},
+      {242, 142, 43},
+      {225, 87, 89},
+      {118, 183, 178},
+      {89, 161, 79},
+      {237, 201, 72},
+      {176, 122, 161},
+      {255, 157, 167},
+      {156, 117, 95},
+      {186, 176, 172},
+  }};
+  const auto& c = kTableau[static_cast<std::size_t>(((k % 10) + 10) % 10)];
+  return {c[0] / 255.0, c[1] / 255.0, c[2] / 255.0};
+}
+
+}  // namespace sg

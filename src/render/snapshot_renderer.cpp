@@ -1,0 +1,523 @@
+#include "render/snapshot_renderer.h"
+
+#include <cairo.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <sstream>
+#include <unordered_map>
+
+#include "core/error.h"
+#include "render/colormap.h"
+
+namespace sg {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Bounds {
+  double x0 = std::numeric_limits<double>::infinity(), x1 = -x0;
+  double y0 = x0, y1 = -x0;
+  void add(const Vec2& p) {
+    x0 = std::min(x0, p.x());
+    x1 = std::max(x1, p.x());
+    y0 = std::min(y0, p.y());
+    y1 = std::max(y1, p.y());
+  }
+  bool empty() const { return !(x1 >= x0 && y1 >= y0); }
+};
+
+// Min and max of the field over the points of the cells it colours.
+void accumulate_range(const VtuMesh& mesh, const std::string& field, double& lo, double& hi) {
+  const std::vector<double> value = point_scalar(mesh, field);
+  const bool rigid_too = field_defined_on_rigid(field);
+  for (std::size_t c = 0; c < mesh.cell_count(); ++c) {
+    if (mesh.types[c] != kVtkTriangle && !(rigid_too && mesh.types[c] == kVtkPolygon)) continue;
+    for (int p : mesh.cell(c)) {
+      const double v = value[static_cast<std::size_t>(p)];
+      if (!std::isfinite(v)) continue;
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+  }
+}
+
+std::string unit_of(const std::string& field) {
+  if (field.rfind("velocity", 0) == 0) return "length/time";
+  if (field.rfind("displacement", 0) == 0) return "length";
+  if (field == "green_lagrange_norm") return "1";
+  if (field == "von_mises" || field == "pressure" || field.rfind("sigma_", 0) == 0) return "stress";
+  return "";
+}
+
+std::string format_number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", v);
+  return text;
+}
+
+// 1, 2 or 5 times a power of ten, close to `target` from below.
+double nice_length(double target) {
+  const double p = std::pow(10.0, std::floor(std::log10(target)));
+  for (double m : {5.0, 2.0, 1.0})
+    if (m * p <= target) return m * p;
+  return p;
+}
+
+bool on_path(const std::string& program) {
+  const char* path = std::getenv("PATH");
+  if (!path) return false;
+  std::stringstream dirs(path);
+  std::string dir;
+  while (std::getline(dirs, dir, ':')) {
+    if (dir.empty()) continue;
+    std::error_code ec;
+    const fs::path candidate = fs::path(dir) / program;
+    if (fs::is_regular_file(candidate, ec) &&
+        (fs::status(candidate, ec).permissions() & fs::perms::owner_exec) != fs::perms::none)
+      return true;
+  }
+  return false;
+}
+
+// Picture geometry, fixed for the whole series: world box -> pixels.
+struct Layout {
+  int width = 0, height = 0;
+  double font = 12.0;
+  double plot_x0 = 0, plot_y0 = 0, plot_x1 = 0, plot_y1 = 0;  // pixel box of the drawing
+  double scale = 1.0;                                         // pixels per length
+  double offset_x = 0, offset_y = 0;                          // pixel of world (0, 0)
+  Bounds world;
+  bool colour_bar = true;
+
+  double px(double x) const { return offset_x + scale * x; }
+  double py(double y) const { return offset_y - scale * y; }
+};
+
+Layout make_layout(int width, int height, const Bounds& world, bool colour_bar) {
+  Layout l;
+  l.width = width;
+  l.height = height;
+  l.world = world;
+  l.colour_bar = colour_bar;
+  l.font = std::clamp(height / 42.0, 9.0, 26.0);
+  const double title_band = 2.2 * l.font, bottom_band = 2.8 * l.font;
+  const double right_band = colour_bar ? 8.5 * l.font : l.font;
+  l.plot_x0 = l.font;
+  l.plot_y0 = title_band;
+  l.plot_x1 = std::max(l.plot_x0 + 1.0, width - right_band);
+  l.plot_y1 = std::max(l.plot_y0 + 1.0, height - bottom_band);
+  const double wx = std::max(world.x1 - world.x0, 1e-12);
+  const double wy = std::max(world.y1 - world.y0, 1e-12);
+  l.scale = std::min((l.plot_x1 - l.plot_x0) / wx, (l.plot_y1 - l.plot_y0) / wy);
+  // Centre the world box in the plot box.
+  const double cx = 0.5 * (l.plot_x0 + l.plot_x1), cy = 0.5 * (l.plot_y0 + l.plot_y1);
+  l.offset_x = cx - l.scale * 0.5 * (world.x0 + world.x1);
+  l.offset_y = cy + l.scale * 0.5 * (world.y0 + world.y1);
+  return l;
+}
+
+struct Frame {
+  const VtuMesh* mesh = nullptr;
+  double time = 0.0;
+  std::string label;  // snapshot number
+};
+
+struct Style {
+  std::string field;
+  bool categorical = false;
+  double lo = 0.0, hi = 1.0;
+  std::optional<std::pair<double, double>> periodic;
+  std::string title;
+};
+
+Rgb colour_of(const Style& s, double v) {
+  if (s.categorical) return category_colour(static_cast<int>(std::lround(v)));
+  const double t = s.hi > s.lo ? (v - s.lo) / (s.hi - s.lo) : 0.5;
+  return viridis(t);
+}
+
+// The x shifts (multiples of the period) at which a cell spanning [x0, x1] shows in the
+// period box.
+std::vector<double> shifts_for(const Style& s, double x0, double x1) {
+  if (!s.periodic) return {0.0};
+  const double a = s.periodic->first, b = s.periodic->second, L = b - a;
+  std::vector<double> out;
+  for (int k = -1; k <= 1; ++k)
+    if (x1 + k * L > a && x0 + k * L < b) out.push_back(k * L);
+  return out;
+}
+
+// Triangle vertices, unwrapped to the periodic image nearest the first vertex (the writer
+// may wrap each node into the period on its own).
+std::array<Vec2, 3> triangle_points(const VtuMesh& m, std::span<const int> cell, const Style& s) {
+  std::array<Vec2, 3> p;
+  for (int k = 0; k < 3; ++k)
+    p[static_cast<std::size_t>(k)] =
+        m.points[static_cast<std::size_t>(cell[static_cast<std::size_t>(k)])];
+  if (s.periodic) {
+    const double L = s.periodic->second - s.periodic->first;
+    for (int k = 1; k < 3; ++k) {
+      Vec2& q = p[static_cast<std::size_t>(k)];
+      q.x() -= L * std::round((q.x() - p[0].x()) / L);
+    }
+  }
+  return p;
+}
+
+void draw_frame(cairo_t* cr, const Layout& l, const Style& s, const Frame& f) {
+  const VtuMesh& m = *f.mesh;
+  const std::vector<double> value = point_scalar(m, s.field == "body" ? "body_id" : s.field);
+  const std::vector<double> body = point_scalar(m, "body_id");
+  const bool rigid_coloured = field_defined_on_rigid(s.field);
+
+  cairo_save(cr);
+  cairo_rectangle(cr, l.plot_x0, l.plot_y0, l.plot_x1 - l.plot_x0, l.plot_y1 - l.plot_y0);
+  cairo_clip(cr);
+  if (s.periodic) {
+    // The period: a light band, so that the seam-wrapped cell reads as one.
+    const double xa = l.px(s.periodic->first), xb = l.px(s.periodic->second);
+    cairo_rectangle(cr, xa, l.py(l.world.y1), xb - xa, l.py(l.world.y0) - l.py(l.world.y1));
+    cairo_set_source_rgb(cr, 0.965, 0.965, 0.965);
+    cairo_fill_preserve(cr);
+    cairo_clip(cr);
+  }
+
+  // Rigid bodies: filled polygons.
+  for (std::size_t c = 0; c < m.cell_count(); ++c) {
+    if (m.types[c] != kVtkPolygon) continue;
+    const auto cell = m.cell(c);
+    if (cell.empty()) continue;
+    Bounds b;
+    double mean = 0.0;
+    for (int p : cell) {
+      b.add(m.points[static_cast<std::size_t>(p)]);
+      mean += value[static_cast<std::size_t>(p)];
+    }
+    mean /= static_cast<double>(cell.size());
+    const Rgb fill =
+        rigid_coloured
+            ? colour_of(s, s.categorical ? body[static_cast<std::size_t>(cell[0])] : mean)
+            : Rgb{0.78, 0.78, 0.78};
+    for (double shift : shifts_for(s, b.x0, b.x1)) {
+      cairo_new_path(cr);
+      for (int p : cell) {
+        const Vec2& q = m.points[static_cast<std::size_t>(p)];
+        cairo_line_to(cr, l.px(q.x() + shift), l.py(q.y()));
+      }
+      cairo_close_path(cr);
+      cairo_set_source_rgb(cr, fill.r, fill.g, fill.b);
+      cairo_fill_preserve(cr);
+      cairo_set_source_rgba(cr, 0.15, 0.15, 0.15, 0.9);
+      cairo_set_line_width(cr, 1.0);
+      cairo_stroke(cr);
+    }
+  }
+
+  // Deformable grains: one mesh-pattern patch per triangle (and per periodic image).
+  if (s.categorical) {
+    // Flat colour per body: all its triangles as one path, so no seams show between them.
+    std::unordered_map<int, std::vector<std::size_t>> by_body;
+    for (std::size_t c = 0; c < m.cell_count(); ++c)
+      if (m.types[c] == kVtkTriangle)
+        by_body[static_cast<int>(std::lround(body[static_cast<std::size_t>(m.cell(c)[0])]))]
+            .push_back(c);
+    for (const auto& [id, cells] : by_body) {
+      cairo_new_path(cr);
+      for (std::size_t c : cells) {
+        const auto p = triangle_points(m, m.cell(c), s);
+        const double x0 = std::min({p[0].x(), p[1].x(), p[2].x()});
+        const double x1 = std::max({p[0].x(), p[1].x(), p[2].x()});
+        for (double shift : shifts_for(s, x0, x1)) {
+          cairo_move_to(cr, l.px(p[0].x() + shift), l.py(p[0].y()));
+          cairo_line_to(cr, l.px(p[1].x() + shift), l.py(p[1].y()));
+          cairo_line_to(cr, l.px(p[2].x() + shift), l.py(p[2].y()));
+          cairo_close_path(cr);
+        }
+      }
+      const Rgb c = category_colour(id);
+      cairo_set_source_rgb(cr, c.r, c.g, c.b);
+      cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+      cairo_fill(cr);
+    }
+  } else {
+    cairo_pattern_t* mesh = cairo_pattern_create_mesh();
+    bool any = false;
+    for (std::size_t c = 0; c < m.cell_count(); ++c) {
+      if (m.types[c] != kVtkTriangle) continue;
+      const auto cell = m.cell(c);
+      const auto p = triangle_points(m, cell, s);
+      const double x0 = std::min({p[0].x(), p[1].x(), p[2].x()});
+      const double x1 = std::max({p[0].x(), p[1].x(), p[2].x()});
+      for (double shift : shifts_for(s, x0, x1)) {
+        cairo_mesh_pattern_begin_patch(mesh);
+        cairo_mesh_pattern_move_to(mesh, l.px(p[0].x() + shift), l.py(p[0].y()));
+        cairo_mesh_pattern_line_to(mesh, l.px(p[1].x() + shift), l.py(p[1].y()));
+        cairo_mesh_pattern_line_to(mesh, l.px(p[2].x() + shift), l.py(p[2].y()));
+        for (unsigned k = 0; k < 3; ++k) {
+          const Rgb col = colour_of(s, value[static_cast<std::size_t>(cell[k])]);
+          cairo_mesh_pattern_set_corner_color_rgb(mesh, k, col.r, col.g, col.b);
+        }
+        cairo_mesh_pattern_end_patch(mesh);
+        any = true;
+      }
+    }
+    if (any) {
+      cairo_set_source(cr, mesh);
+      cairo_paint(cr);
+    }
+    cairo_pattern_destroy(mesh);
+  }
+
+  // Grain outlines: triangle edges used once within a body are its boundary.
+  {
+    std::unordered_map<std::uint64_t, int> edge_count;
+    auto key = [](int a, int b) {
+      if (a > b) std::swap(a, b);
+      return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+             static_cast<std::uint32_t>(b);
+    };
+    for (std::size_t c = 0; c < m.cell_count(); ++c) {
+      if (m.types[c] != kVtkTriangle) continue;
+      const auto cell = m.cell(c);
+      for (int k = 0; k < 3; ++k)
+        ++edge_count[key(cell[static_cast<std::size_t>(k)],
+                         cell[static_cast<std::size_t>((k + 1) % 3)])];
+    }
+    cairo_new_path(cr);
+    for (const auto& [e, count] : edge_count) {
+      if (count != 1) continue;
+      Vec2 a = m.points[static_cast<std::size_t>(e >> 32)];
+      Vec2 b = m.points[static_cast<std::size_t>(e & 0xffffffffu)];
+      if (s.periodic) {
+        const double L = s.periodic->second - s.periodic->first;
+        b.x() -= L * std::round((b.x() - a.x()) / L);
+      }
+      for (double shift : shifts_for(s, std::min(a.x(), b.x()), std::max(a.x(), b.x()))) {
+        cairo_move_to(cr, l.px(a.x() + shift), l.py(a.y()));
+        cairo_line_to(cr, l.px(b.x() + shift), l.py(b.y()));
+      }
+    }
+    cairo_set_source_rgba(cr, 0.1, 0.1, 0.1, 0.75);
+    cairo_set_line_width(cr, std::clamp(l.scale * 0.012, 0.6, 1.5));
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+    cairo_stroke(cr);
+  }
+  cairo_restore(cr);
+}
+
+void draw_text(cairo_t* cr, double x, double y, const std::string& text, double size,
+               double align = 0.0) {
+  cairo_set_font_size(cr, size);
+  cairo_text_extents_t e;
+  cairo_text_extents(cr, text.c_str(), &e);
+  cairo_move_to(cr, x - align * e.x_advance, y);
+  cairo_show_text(cr, text.c_str());
+}
+
+void draw_decorations(cairo_t* cr, const Layout& l, const Style& s, const Frame& f) {
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+  // Title: run, field, time.
+  std::ostringstream title;
+  if (!s.title.empty()) title << s.title << "   ";
+  title << s.field << "   t = " << format_number(f.time);
+  draw_text(cr, l.plot_x0, 1.4 * l.font, title.str(), l.font);
+  draw_text(cr, l.width - l.font, 1.4 * l.font, "frame " + f.label, 0.8 * l.font, 1.0);
+
+  // Scale bar under the drawing, bottom left.
+  const double world_width = l.world.x1 - l.world.x0;
+  const double length = nice_length(world_width / 5.0);
+  const double bar_px = length * l.scale;
+  const double bx = std::max(l.plot_x0, l.px(l.world.x0));
+  const double by = l.plot_y1 + 1.1 * l.font;
+  cairo_rectangle(cr, bx, by, bar_px, 0.35 * l.font);
+  cairo_fill(cr);
+  for (double x : {bx, bx + bar_px}) {
+    cairo_move_to(cr, x, by - 0.25 * l.font);
+    cairo_line_to(cr, x, by + 0.6 * l.font);
+  }
+  cairo_set_line_width(cr, 1.0);
+  cairo_stroke(cr);
+  draw_text(cr, bx + bar_px + 0.6 * l.font, by + 0.45 * l.font, format_number(length) + " (length)",
+            0.85 * l.font);
+
+  if (!l.colour_bar) return;
+  // Colour bar, right: the map sampled finely, the range at its ends, a few ticks between.
+  const double cx = l.plot_x1 + 1.2 * l.font, cw = 1.3 * l.font;
+  const double top = l.plot_y0 + 2.4 * l.font, bottom = l.plot_y1 - 0.5 * l.font;
+  cairo_pattern_t* bar = cairo_pattern_create_linear(0, bottom, 0, top);
+  for (int k = 0; k <= 20; ++k) {
+    const Rgb c = viridis(k / 20.0);
+    cairo_pattern_add_color_stop_rgb(bar, k / 20.0, c.r, c.g, c.b);
+  }
+  cairo_rectangle(cr, cx, top, cw, bottom - top);
+  cairo_set_source(cr, bar);
+  cairo_fill_preserve(cr);
+  cairo_pattern_destroy(bar);
+  cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+  cairo_set_line_width(cr, 1.0);
+  cairo_stroke(cr);
+  const std::string unit = unit_of(s.field);
+  draw_text(cr, cx, top - 1.5 * l.font, s.field, 0.85 * l.font);
+  if (!unit.empty()) draw_text(cr, cx, top - 0.5 * l.font, "(" + unit + ")", 0.75 * l.font);
+  const int ticks = 5;
+  for (int k = 0; k < ticks; ++k) {
+    const double t = static_cast<double>(k) / (ticks - 1);
+    const double y = bottom - t * (bottom - top);
+    cairo_move_to(cr, cx + cw, y);
+    cairo_line_to(cr, cx + cw + 0.35 * l.font, y);
+    cairo_stroke(cr);
+    draw_text(cr, cx + cw + 0.55 * l.font, y + 0.3 * l.font,
+              format_number(s.lo + t * (s.hi - s.lo)), 0.8 * l.font);
+  }
+}
+
+void write_png(const Layout& l, const Style& s, const Frame& f, const fs::path& path) {
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, l.width, l.height);
+  cairo_t* cr = cairo_create(surface);
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_paint(cr);
+  draw_frame(cr, l, s, f);
+  draw_decorations(cr, l, s, f);
+  cairo_destroy(cr);
+  cairo_surface_flush(surface);
+  // Atomic: a reader never sees half a picture.
+  const fs::path tmp = path.string() + ".tmp";
+  const cairo_status_t status = cairo_surface_write_to_png(surface, tmp.c_str());
+  cairo_surface_destroy(surface);
+  SG_VERIFY(status == CAIRO_STATUS_SUCCESS,
+            "cannot write '" << tmp.string() << "': " << cairo_status_to_string(status));
+  fs::rename(tmp, path);
+}
+
+}  // namespace
+
+bool field_defined_on_rigid(const std::string& field) {
+  return field.rfind("velocity", 0) == 0 || field.rfind("displacement", 0) == 0 ||
+         field == "body" || field == "body_id";
+}
+
+std::pair<double, double> field_range(const std::vector<VtuMesh>& meshes,
+                                      const std::string& field) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const auto& m : meshes)
+    accumulate_range(m, field, lo, hi);
+  SG_VERIFY(hi >= lo, "field '" << field << "': no point of any snapshot is coloured by it");
+  return {lo, hi};
+}
+
+RenderResult render_run(const fs::path& run_dir, const RenderOptions& options) {
+  SG_VERIFY(options.width >= 64 && options.height >= 64 && options.width <= 16384 &&
+                options.height <= 16384,
+            "render: picture size " << options.width << "x" << options.height
+                                    << " outside 64..16384 pixels");
+  if (options.range)
+    SG_VERIFY(options.range->second > options.range->first,
+              "render: --range " << options.range->first << " " << options.range->second
+                                 << ": MAX must exceed MIN");
+  const fs::path pvd = run_dir / "fields.pvd";
+  SG_VERIFY(fs::exists(pvd), "'" << run_dir.string() << "' has no fields.pvd: not a run folder, "
+                                 << "or the run wrote no field snapshot");
+  const std::vector<PvdEntry> entries = read_pvd(pvd);
+  SG_VERIFY(!entries.empty(), pvd.string() << ": no snapshot listed");
+
+  Style style;
+  style.field = options.field;
+  style.categorical = options.field == "body" || options.field == "body_id";
+  style.periodic = options.periodic;
+  style.title = options.title;
+
+  // Pass 1, over every frame: the drawing box and the colour range, fixed for the series.
+  Bounds world;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const auto& e : entries) {
+    const VtuMesh m = read_vtu(e.file);
+    for (const Vec2& p : m.points)
+      world.add(p);
+    if (!style.categorical && !options.range)
+      accumulate_range(m, options.field, lo, hi);
+    else
+      (void)point_scalar(m, options.field);  // fail early on an unknown field
+  }
+  SG_VERIFY(!world.empty(), pvd.string() << ": the snapshots hold no point");
+  if (options.periodic) {
+    world.x0 = options.periodic->first;
+    world.x1 = options.periodic->second;
+  }
+  RenderResult result;
+  if (!style.categorical) {
+    if (options.range) {
+      lo = options.range->first;
+      hi = options.range->second;
+    }
+    SG_VERIFY(hi >= lo, "field '" << options.field
+                                  << "': no point of any snapshot is coloured by it"
+                                  << " (rigid bodies only?)");
+    style.lo = lo;
+    style.hi = hi;
+    result.has_range = true;
+    result.range_min = lo;
+    result.range_max = hi;
+  }
+  // A small margin so that outlines on the box's edge are not cut.
+  const double margin = 0.01 * std::max(world.x1 - world.x0, world.y1 - world.y0);
+  if (!options.periodic) {
+    world.x0 -= margin;
+    world.x1 += margin;
+  }
+  world.y0 -= margin;
+  world.y1 += margin;
+  const Layout layout = make_layout(options.width, options.height, world, !style.categorical);
+
+  // Pass 2: the pictures.
+  const fs::path out_dir = run_dir / "render";
+  fs::create_directories(out_dir);
+  const std::size_t first = options.last_frame_only ? entries.size() - 1 : 0;
+  for (std::size_t i = first; i < entries.size(); ++i) {
+    const VtuMesh m = read_vtu(entries[i].file);
+    const std::string number = entries[i].file.stem().string();
+    Frame frame{&m, entries[i].time, number};
+    const fs::path png = out_dir / (options.field + "_" + number + ".png");
+    write_png(layout, style, frame, png);
+    result.images.push_back(png);
+  }
+
+  // The movie: ffmpeg if present; frames must be numbered consecutively.
+  if (!options.movie || result.images.size() < 2) {
+    result.note = options.movie ? "one frame: no movie" : "";
+  } else if (!on_path("ffmpeg")) {
+    result.note = "ffmpeg not found on PATH: no movie (the PNG frames are written)";
+  } else {
+    const fs::path mp4 = out_dir / (options.field + ".mp4");
+    const std::string start = entries.front().file.stem().string();
+    std::ostringstream cmd;
+    cmd << "ffmpeg -y -loglevel error -framerate 8 -start_number " << std::stoi(start) << " -i '"
+        << (out_dir / (options.field + "_%06d.png")).string()
+        << "' -vf 'scale=trunc(iw/2)*2:trunc(ih/2)*2' -pix_fmt yuv420p -vcodec libx264 '"
+        << mp4.string() << "' < /dev/null";
+    if (std::system(cmd.str().c_str()) == 0)
+      result.movie = mp4;
+    else
+      result.note = "ffmpeg failed: no movie (command: " + cmd.str() + ")";
+  }
+  return result;
+}
+
+std::pair<int, int> png_size(const fs::path& png) {
+  cairo_surface_t* s = cairo_image_surface_create_from_png(png.c_str());
+  const cairo_status_t status = cairo_surface_status(s);
+  if (status != CAIRO_STATUS_SUCCESS) {
+    cairo_surface_destroy(s);
+    SG_THROW("cannot read PNG '" << png.string() << "': " << cairo_status_to_string(status));
+  }
+  const std::pair<int, int> size(cairo_image_surface_get_width(s),
+                                 cairo_image_surface_get_height(s));
+  cairo_surface_destroy(s);
+  return size;
+}
+
+}  // namespace sg

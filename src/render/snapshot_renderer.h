@@ -1,0 +1,59 @@
+#pragma once
+// PNG pictures of a run's field snapshots (fields/NNNNNN.vtu), drawn with Cairo.
+//
+// What a picture shows: every deformable grain as its triangulation in the current
+// configuration, filled by a nodal field and interpolated linearly over each triangle
+// (Gouraud shading: one Cairo mesh-pattern patch per triangle), outlined by its boundary
+// edges; rigid bodies (rigid grains, walls, first bodies) as filled polygons, coloured by
+// the field where the field is defined on them (velocity, displacement, body) and in
+// neutral grey otherwise (the writer gives them zero stress, which is not a measurement);
+// a colour bar with the field's name, unit and range; a length scale bar; the time.
+//
+// The colour range is one for the whole series (so that a movie does not flicker and two
+// frames compare by colour): the one given, else min and max of the field over every
+// frame, taken over the points of the cells that are coloured by it. Periodic runs are
+// drawn over one period, bodies crossing the seam wrapped to both sides.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "render/vtu_reader.h"
+
+namespace sg {
+
+struct RenderOptions {
+  std::string field = "von_mises";                 // a point field of the .vtu, or velocity, body
+  int width = 1200, height = 800;                  // pixels
+  std::optional<std::pair<double, double>> range;  // colour range; unset: over all frames
+  bool last_frame_only = false;
+  std::optional<std::pair<double, double>> periodic;  // x span [x_min, x_max) if periodic
+  std::string title;                                  // e.g. the run name
+  bool movie = true;  // also an MP4 when ffmpeg is on PATH and every frame is drawn
+};
+
+struct RenderResult {
+  bool has_range = false;  // false for the categorical "body" field
+  double range_min = 0.0, range_max = 0.0;
+  std::vector<std::filesystem::path> images;
+  std::filesystem::path movie;  // empty if none was made
+  std::string note;             // why there is no movie, etc.
+};
+
+// True for fields that are defined on rigid bodies too (velocity, displacement, body).
+bool field_defined_on_rigid(const std::string& field);
+
+// The range of `field` over the coloured points of every mesh (see above). Throws
+// sg::Error if no point is coloured by it.
+std::pair<double, double> field_range(const std::vector<VtuMesh>& meshes, const std::string& field);
+
+// Reads RUN_DIR/fields.pvd and its snapshots; writes RUN_DIR/render/<field>_NNNNNN.png
+// (NNNNNN the snapshot's number) and, if possible, RUN_DIR/render/<field>.mp4. Throws
+// sg::Error naming the file for a missing or malformed input, or a bad option.
+RenderResult render_run(const std::filesystem::path& run_dir, const RenderOptions& options);
+
+// Width and height of a PNG file, read back with Cairo (for tests and checks).
+std::pair<int, int> png_size(const std::filesystem::path& png);
+
+}  // namespace sg
