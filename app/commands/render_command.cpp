@@ -56,10 +56,10 @@ const Registration registration(
          options.last_frame_only = args->frames == "last";
          options.movie = !args->no_movie;
          const std::filesystem::path dir(args->run_dir);
-         const RunScenario run = load_run_scenario(dir);
-         if (run.scenario) {
-           options.periodic = periodic_span(*run.scenario);
-           options.title = run.scenario->name;
+         const RunInfo run = read_run_info(dir);
+         if (run.has_scenario) {
+           options.periodic = run.periodic;
+           options.title = run.name;
          } else {
            options.title = std::filesystem::absolute(dir).lexically_normal().filename().string();
            std::cerr << "note: " << run.note

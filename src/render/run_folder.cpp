@@ -3,52 +3,16 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "scenario/scenario.h"
 
 namespace sg {
-
-RunScenario load_run_scenario(const std::filesystem::path& run_dir) {
-  RunScenario r;
-  std::ifstream log(run_dir / "run.log");
-  if (!log) {
-    r.note = "no run.log in '" + run_dir.string() + "'";
-    return r;
-  }
-  std::string line;
-  while (std::getline(log, line)) {
-    const std::string key = "scenario = ";
-    if (line.rfind(key, 0) == 0) {
-      r.source = line.substr(key.size());
-      break;
-    }
-  }
-  if (r.source.empty()) {
-    r.note = "run.log names no scenario";
-    return r;
-  }
-  // A relative path was relative to where `softgrain run` started; try it as is, then next
-  // to the run folder's parent (the usual layout: out/<name>/ beside the scenario).
-  std::filesystem::path file = r.source;
-  if (!std::filesystem::exists(file) && file.is_relative()) {
-    const auto beside = run_dir.parent_path().parent_path() / file.filename();
-    if (std::filesystem::exists(beside)) file = beside;
-  }
-  if (!std::filesystem::exists(file)) {
-    r.note = "scenario '" + r.source.string() + "' (from run.log) not found";
-    return r;
-  }
-  try {
-    r.scenario = load_scenario(file);
-  } catch (const Error& e) {
-    r.note = std::string("scenario '") + file.string() + "' could not be read: " + e.what();
-  }
-  return r;
-}
+namespace {
 
 std::vector<std::string> body_names(const ScenarioDef& s) {
   std::vector<std::string> names;
-  for (std::size_t i = 0; i < s.grains.size(); ++i)
-    names.push_back(s.grains[i].name);
-  if (s.shear_cell) {
+  for (const GrainSpec& g : s.grains)
+    names.push_back(g.name);
+  if (s.shear_cell) {  // scenario/shear_cell.cpp: bottom, top, then grain_<i>
     names.push_back("bottom");
     names.push_back("top");
     for (int i = 0; i < s.shear_cell->grains; ++i)
@@ -59,10 +23,99 @@ std::vector<std::string> body_names(const ScenarioDef& s) {
   return names;
 }
 
-std::optional<std::pair<double, double>> periodic_span(const ScenarioDef& s) {
-  if (s.shear_cell) return std::make_pair(0.0, s.shear_cell->length);
-  if (s.periodic_x) return std::make_pair(s.x_min, s.x_max);
-  return std::nullopt;
+// E, alpha, c of the grains: the shear cell's grain material, or the one material all
+// explicit deformable grains share.
+void grain_material_parameters(const ScenarioDef& s, RunInfo& info) {
+  std::string material;
+  if (s.shear_cell) {
+    material = s.shear_cell->grain_material;
+  } else {
+    for (const GrainSpec& g : s.grains) {
+      if (g.rigid) continue;
+      if (material.empty()) {
+        material = g.material;
+      } else if (g.material != material) {
+        info.notes.push_back(
+            "E, alpha, c: the deformable grains use several materials; pass "
+            "--young, --alpha, --cohesion");
+        return;
+      }
+    }
+  }
+  if (material.empty()) return;
+  for (const MaterialDef& m : s.materials)
+    if (m.name == material) {
+      info.parameters.young_modulus = m.young;
+      info.parameters.damping_alpha = m.damping;
+    }
+  for (const ContactLawDef& law : s.contact_laws)
+    if (law.material_a == material && law.material_b == material)
+      // c = sigma_c (papers 001/002 take sigma_c = tau_c = c); 0 for a law without cohesion.
+      info.parameters.cohesion =
+          law.params.kind == ContactLawKind::cohesive ? law.params.adhesion : 0.0;
+}
+
+}  // namespace
+
+RunInfo read_run_info(const std::filesystem::path& run_dir) {
+  RunInfo info;
+  std::ifstream log(run_dir / "run.log");
+  if (!log) {
+    info.note = "no run.log in '" + run_dir.string() + "'";
+    return info;
+  }
+  std::string line;
+  while (std::getline(log, line)) {
+    const std::string key = "scenario = ";
+    if (line.rfind(key, 0) == 0) {
+      info.source = line.substr(key.size());
+      break;
+    }
+  }
+  if (info.source.empty()) {
+    info.note = "run.log names no scenario";
+    return info;
+  }
+  // A relative path was relative to where `softgrain run` started; try it as is, then
+  // beside the output root (out/<name>/ next to the scenario).
+  std::filesystem::path file = info.source;
+  if (!std::filesystem::exists(file) && file.is_relative()) {
+    const auto beside = run_dir.parent_path().parent_path() / file.filename();
+    if (std::filesystem::exists(beside)) file = beside;
+  }
+  if (!std::filesystem::exists(file)) {
+    info.note = "scenario '" + info.source.string() + "' (named in run.log) not found";
+    return info;
+  }
+  ScenarioDef s;
+  try {
+    s = load_scenario(file);
+  } catch (const Error& e) {
+    info.note = "scenario '" + file.string() + "' could not be read: " + e.what();
+    return info;
+  }
+  info.has_scenario = true;
+  info.name = s.name;
+  info.body_names = body_names(s);
+  for (const WallDef& w : s.walls)
+    info.walls.push_back(w.name);
+  info.shear_cell = s.shear_cell.has_value();
+  if (s.shear_cell) {
+    info.periodic = std::make_pair(0.0, s.shear_cell->length);
+    info.parameters.length = s.shear_cell->length;
+    info.parameters.velocity = s.shear_cell->velocity;
+    if (s.shear_cell->gap > 0.0)
+      info.parameters.gap = s.shear_cell->gap;
+    else
+      info.notes.push_back(
+          "gap D: the scenario lets the shear cell choose it (gap = 0); pass "
+          "--gap");
+  } else if (s.periodic_x) {
+    info.periodic = std::make_pair(s.x_min, s.x_max);
+    info.parameters.length = s.x_max - s.x_min;
+  }
+  grain_material_parameters(s, info);
+  return info;
 }
 
 }  // namespace sg

@@ -1,35 +1,39 @@
 #pragma once
 // What a run folder says about itself beyond its data files: the scenario it was run from
-// (the `scenario = <path>` line of run.log, re-read if the file is still there) and the
-// body names in the engine's order (grains/NNNNNN.csv and body_id in the .vtu files
-// number bodies, they do not name them).
+// (the `scenario = <path>` line of run.log, re-read if the file is still there), reduced to
+// what analysis and pictures need: the run parameters of the papers, the periodic span,
+// and the body names in the engine's order (grains/NNNNNN.csv and body_id in the .vtu
+// files number bodies, they do not name them).
 //
-// Lives in render/ because it needs the scenario layer and render is the first stage above
-// io; the analysis stage does not link the scenario.
+// The header deliberately does not include scenario/scenario.h: meshfree/mls.h (through
+// the scenario) and analysis/velocity_grid.h both define sg::MlsParams, so one translation
+// unit cannot include both.
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
-#include "scenario/scenario.h"
+#include "analysis/run_parameters.h"
 
 namespace sg {
 
-struct RunScenario {
-  std::optional<ScenarioDef> scenario;  // absent if run.log or the scenario cannot be read
-  std::filesystem::path source;         // as named in run.log ("" if none)
-  std::string note;                     // why it is absent
+struct RunInfo {
+  bool has_scenario = false;
+  std::string note;                // why there is no scenario
+  std::filesystem::path source;    // the scenario file, as named in run.log
+  std::string name;                // run name
+  RunParameters parameters;        // L, D, V, E, c, alpha the scenario gives (NaN otherwise)
+  std::vector<std::string> notes;  // parameters it cannot give, and why
+  std::optional<std::pair<double, double>> periodic;  // [x_min, x_max) if periodic in x
+  bool shear_cell = false;
+  // Body names in the order build_model creates them: explicit grains, the shear cell
+  // ("bottom", "top", "grain_0" ...), then walls.
+  std::vector<std::string> body_names;
+  std::vector<std::string> walls;  // wall names (not grains)
 };
 
-// Never throws for a missing or unreadable scenario: the reason lands in `note`.
-RunScenario load_run_scenario(const std::filesystem::path& run_dir);
-
-// Body names in the order build_model creates them: explicit grains, the shear cell
-// ("bottom", "top", "grain_0" ...), then walls.
-std::vector<std::string> body_names(const ScenarioDef& scenario);
-
-// The period [x_min, x_max) if the scenario is periodic in x (a shear cell is periodic
-// over [0, L)); nullopt otherwise.
-std::optional<std::pair<double, double>> periodic_span(const ScenarioDef& scenario);
+// Never throws for a missing or unreadable run.log or scenario: the reason lands in `note`.
+RunInfo read_run_info(const std::filesystem::path& run_dir);
 
 }  // namespace sg

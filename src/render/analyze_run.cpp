@@ -1,0 +1,326 @@
+#include "render/analyze_run.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "analysis/atomic_file.h"
+#include "analysis/driven_body.h"
+#include "analysis/energy_budget.h"
+#include "analysis/friction.h"
+#include "analysis/grain_snapshot.h"
+#include "analysis/series.h"
+#include "analysis/steady_state.h"
+#include "core/error.h"
+#include "render/run_folder.h"
+#include "render/vtu_reader.h"
+
+namespace sg {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr double kNan = RunParameters::kUnknown;
+
+FrictionStats unknown_friction(const std::string& body) {
+  FrictionStats s;
+  s.body = body;
+  s.normal_force = s.tangential_force = s.mu = s.mu_std = kNan;
+  s.normal_stress = s.shear_stress = kNan;
+  return s;
+}
+
+std::string number(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+// One run parameter: the option if given, else the run's value, else unknown.
+double pick(AnalyzeResult& r, const std::string& key, const std::string& unit, double option,
+            double from_run, const std::string& run_source) {
+  ParameterSource p{key, kNan, unit, "unknown"};
+  if (std::isfinite(option)) {
+    p.value = option;
+    p.source = "option";
+  } else if (std::isfinite(from_run)) {
+    p.value = from_run;
+    p.source = run_source;
+  }
+  r.parameter_sources.push_back(p);
+  return p.value;
+}
+
+struct Snapshots {
+  std::vector<GrainSnapshot> all;  // grains only, time order
+  std::size_t files = 0;
+};
+
+Snapshots read_snapshots(const fs::path& run_dir, const std::vector<std::string>& exclude,
+                         std::vector<std::string>& notes) {
+  Snapshots out;
+  const fs::path dir = run_dir / "grains";
+  if (!fs::is_directory(dir)) {
+    notes.push_back("no grains/ folder: no velocity profile, solid fraction or agglomerates");
+    return out;
+  }
+  std::map<std::string, double> time_of;  // snapshot number -> time, from fields.pvd
+  if (fs::exists(run_dir / "fields.pvd"))
+    for (const PvdEntry& e : read_pvd(run_dir / "fields.pvd"))
+      time_of[e.file.stem().string()] = e.time;
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (entry.path().extension() == ".csv") files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  bool missing_time = false;
+  for (const fs::path& f : files) {
+    const auto t = time_of.find(f.stem().string());
+    if (t == time_of.end()) {
+      missing_time = true;
+      continue;
+    }
+    out.all.push_back(without_bodies(read_grain_snapshot(f.string(), t->second), exclude));
+    ++out.files;
+  }
+  if (missing_time)
+    notes.push_back("some grains/*.csv have no time in fields.pvd and were skipped");
+  std::sort(out.all.begin(), out.all.end(),
+            [](const GrainSnapshot& a, const GrainSnapshot& b) { return a.time < b.time; });
+  return out;
+}
+
+std::string json_document(const AnalyzeResult& r, const fs::path& run_dir) {
+  nlohmann::ordered_json doc = nlohmann::ordered_json::parse(summary_json(r.summary));
+  doc["run"] = fs::absolute(run_dir).lexically_normal().string();
+  nlohmann::ordered_json params = nlohmann::ordered_json::object();
+  for (const ParameterSource& p : r.parameter_sources) {
+    nlohmann::ordered_json q;
+    if (std::isfinite(p.value))
+      q["value"] = p.value;
+    else
+      q["value"] = nullptr;
+    q["unit"] = p.unit;
+    q["source"] = p.source;
+    params[p.key] = std::move(q);
+  }
+  doc["parameters"] = std::move(params);
+  if (r.profile) {
+    nlohmann::ordered_json prof;
+    prof["file"] = "profiles.csv";
+    prof["y_min"] = r.profile->y_min;
+    prof["y_max"] = r.profile->y_max;
+    prof["bins"] = r.profile->bins.size();
+    prof["samples_outside"] = r.profile->outside;
+    doc["profile"] = std::move(prof);
+  }
+  doc["notes"] = r.notes;
+  return doc.dump(2) + "\n";
+}
+
+}  // namespace
+
+AnalyzeResult analyze_run(const fs::path& run_dir, const AnalyzeOptions& options) {
+  AnalyzeResult r;
+  std::vector<std::string>& notes = r.notes;
+  const fs::path series_path = run_dir / "series.csv";
+  if (!fs::exists(series_path) && fs::exists(run_dir / "series.csv.partial"))
+    SG_THROW("'" << run_dir.string()
+                 << "': only series.csv.partial: the run is still going or was interrupted");
+  SG_VERIFY(fs::exists(series_path),
+            "'" << run_dir.string() << "' has no series.csv: not a run folder");
+  const Series series = read_series(series_path.string());
+  SG_VERIFY(series.size() >= 2, series_path.string() << ": fewer than 2 rows, nothing to average");
+
+  // --- Run parameters: options, then the scenario, then measured.
+  const RunInfo run = read_run_info(run_dir);
+  const std::string scenario_source = "scenario " + run.source.filename().string();
+  std::vector<std::string> exclude;  // grain-snapshot rows that are not grains
+  if (run.has_scenario) {
+    notes.insert(notes.end(), run.notes.begin(), run.notes.end());
+    std::vector<std::string> not_grains(series.body_names);  // driven bodies
+    not_grains.insert(not_grains.end(), run.walls.begin(), run.walls.end());
+    if (run.shear_cell) {
+      not_grains.push_back("top");
+      not_grains.push_back("bottom");
+    }
+    // grains/*.csv number bodies in build order; exclude the indices of the non-grains.
+    for (std::size_t i = 0; i < run.body_names.size(); ++i)
+      if (std::find(not_grains.begin(), not_grains.end(), run.body_names[i]) != not_grains.end())
+        exclude.push_back(std::to_string(i));
+  } else {
+    notes.push_back(run.note +
+                    ": run parameters only from options; walls cannot be told from "
+                    "grains in grains/*.csv");
+  }
+  const RunParameters& sv = run.parameters;
+  const RunParameters& g = options.given;
+  RunParameters& p = r.parameters;
+  p.length = pick(r, "length", "length", g.length, sv.length, scenario_source);
+  p.gap = pick(r, "gap", "length", g.gap, sv.gap, scenario_source);
+  p.velocity = pick(r, "velocity", "length/time", g.velocity, sv.velocity, scenario_source);
+  p.young_modulus =
+      pick(r, "young_modulus", "stress", g.young_modulus, sv.young_modulus, scenario_source);
+  p.cohesion = pick(r, "cohesion", "force/length", g.cohesion, sv.cohesion, scenario_source);
+  p.damping_alpha =
+      pick(r, "damping_alpha", "time", g.damping_alpha, sv.damping_alpha, scenario_source);
+
+  Snapshots snaps = read_snapshots(run_dir, exclude, notes);
+  double measured_diameter = kNan;
+  if (!snaps.all.empty() && snaps.all.front().size() > 0) {
+    // Mean equivalent diameter 2 sqrt(A/pi) of the grains in the first snapshot.
+    double sum = 0.0;
+    for (double a : snaps.all.front().area)
+      sum += 2.0 * std::sqrt(a / M_PI);
+    measured_diameter = sum / static_cast<double>(snaps.all.front().size());
+  }
+  p.mean_diameter = pick(r, "mean_diameter", "length", g.mean_diameter, measured_diameter,
+                         "grains/*.csv (mean 2 sqrt(area/pi), first snapshot)");
+
+  // --- Driven bodies of the shear cell, window, friction.
+  std::vector<DrivenBody> bodies;
+  for (const DrivenBody& b : shear_cell_bodies())
+    if (std::find(series.body_names.begin(), series.body_names.end(), b.name) !=
+        series.body_names.end())
+      bodies.push_back(b);
+  const bool shear_cell = bodies.size() == 2;
+  if (!shear_cell) {
+    notes.push_back(
+        "series.csv has no 'top' and 'bottom' columns (not a shear cell): no "
+        "friction, stresses, E~ or c~");
+    bodies.clear();
+  }
+  AnalysisSummary& s = r.summary;
+  if (options.window) {
+    s.window = window_from_times(series, options.window->first, options.window->second);
+  } else if (shear_cell) {
+    s.window = detect_steady_window(series, bodies);
+  } else {
+    s.window.first = 0;
+    s.window.last = series.size() - 1;
+    s.window.t_begin = series.column("time")[0];
+    s.window.t_end = series.column("time")[series.size() - 1];
+    s.window.detected = false;
+    notes.push_back(
+        "window: the whole run (no driven shear-cell body to detect a steady state "
+        "on; pass --window T0 T1)");
+  }
+  if (s.window.truncation_at_limit)
+    notes.push_back(
+        "window: MSER's truncation hit half the series; the transient may not be "
+        "over, the averages are suspect");
+  s.friction.mean = unknown_friction("mean");
+  if (shear_cell) {
+    try {
+      s.friction = compute_friction(series, bodies, s.window, p.length);
+    } catch (const Error& e) {
+      notes.push_back(std::string("friction not computed: ") + e.what());
+      s.friction.bodies.clear();
+      s.friction.mean = unknown_friction("mean");
+    }
+  }
+  s.dimensionless = compute_dimensionless(p, s.friction.mean.normal_stress);
+  if (std::isfinite(s.friction.mean.normal_stress)) {
+    if (!std::isfinite(p.young_modulus)) notes.push_back("E~ null: E unknown (pass --young)");
+    if (!(p.cohesion > 0.0)) notes.push_back("c~ null: cohesion unknown or 0");
+  }
+  if (!std::isfinite(s.dimensionless.viscosity)) {
+    std::string missing;
+    if (!std::isfinite(p.velocity)) missing += "V unknown; ";
+    if (!std::isfinite(p.gap)) missing += "D unknown; ";
+    notes.push_back("alpha~ null: needs alpha > 0, V and D (" + missing +
+                    "alpha = " + number(p.damping_alpha) + ")");
+  }
+
+  try {
+    s.energy = compute_energy_budget(series, s.window, s.friction.mean.mu,
+                                     s.friction.mean.normal_force, p.velocity);
+  } catch (const Error& e) {
+    notes.push_back(std::string("energy budget not computed: ") + e.what());
+  }
+
+  // --- Grain snapshots of the window: profiles, solid fraction, agglomerates.
+  std::vector<GrainSnapshot> window_snaps;
+  const double eps = 1e-9 * std::max(1.0, std::abs(s.window.t_end));
+  for (const GrainSnapshot& snap : snaps.all)
+    if (snap.time >= s.window.t_begin - eps && snap.time <= s.window.t_end + eps && snap.size() > 0)
+      window_snaps.push_back(snap);
+  s.solid_fraction = kNan;
+  if (window_snaps.empty()) {
+    if (!snaps.all.empty())
+      notes.push_back(
+          "no grain snapshot inside the window: no profile, solid fraction or "
+          "agglomerates");
+  } else {
+    double cy0 = INFINITY, cy1 = -INFINITY, ext0 = 0.0, ext1 = 0.0;
+    for (const GrainSnapshot& snap : window_snaps) {
+      double lo = INFINITY, hi = -INFINITY;
+      for (std::size_t i = 0; i < snap.size(); ++i) {
+        const double y = snap.position[i].y(), radius = std::sqrt(snap.area[i] / M_PI);
+        cy0 = std::min(cy0, y);
+        cy1 = std::max(cy1, y);
+        lo = std::min(lo, y - radius);
+        hi = std::max(hi, y + radius);
+      }
+      ext0 += lo;
+      ext1 += hi;
+    }
+    ext0 /= static_cast<double>(window_snaps.size());
+    ext1 /= static_cast<double>(window_snaps.size());
+    // Profiles: over the given layer, else over the span of the grain centres.
+    const double y0 = options.layer ? options.layer->first : cy0;
+    const double y1 = options.layer ? options.layer->second : cy1;
+    int bins = options.profile_bins;
+    if (bins <= 0)
+      bins =
+          std::isfinite(p.mean_diameter) && p.mean_diameter > 0.0
+              ? std::clamp(static_cast<int>(std::lround(2.0 * (y1 - y0) / p.mean_diameter)), 4, 200)
+              : 20;
+    try {
+      r.profile = compute_velocity_profile(window_snaps, y0, y1, bins);
+      r.profile_path = run_dir / "analysis" / "profiles.csv";
+      write_velocity_profile_csv(r.profile_path.string(), *r.profile);
+      if (!options.layer)
+        notes.push_back("profile: " + std::to_string(bins) +
+                        " bins over the span of the grain "
+                        "centres [" +
+                        number(y0) + ", " + number(y1) + "] (pass --layer)");
+    } catch (const Error& e) {
+      notes.push_back(std::string("velocity profile not computed: ") + e.what());
+      r.profile.reset();
+    }
+    // Solid fraction: over L x layer; the layer from the grains' extent if not given.
+    const double l0 = options.layer ? options.layer->first : ext0;
+    const double l1 = options.layer ? options.layer->second : ext1;
+    if (!std::isfinite(p.length)) {
+      notes.push_back("solid fraction null: L unknown (not a periodic run; pass --length)");
+    } else {
+      try {
+        s.solid_fraction = mean_solid_fraction(window_snaps, p.length, l0, l1);
+        if (!options.layer)
+          notes.push_back("solid fraction over the grains' extent [" + number(l0) + ", " +
+                          number(l1) +
+                          "] (mean lowest grain bottom to highest grain top; the "
+                          "papers use the rough surfaces' mean lines: pass --layer)");
+      } catch (const Error& e) {
+        notes.push_back(std::string("solid fraction not computed: ") + e.what());
+      }
+    }
+    // Agglomerates (paper 002): not wired yet. analysis/velocity_grid.{h,cpp} and
+    // meshfree/mls.{h,cpp} both define sg::MlsParams and sg::cubic_spline_weight, so an
+    // executable that links the agglomerate code next to the engine fails to link (and one
+    // translation unit cannot include both headers). Once the analysis names are made its
+    // own, call detect_agglomerates + compute_agglomerate_statistics here (periodic grid of
+    // one mean diameter over [y0, y1], MLS support 2 d, coherence radius 2.5 d).
+    (void)options.agglomerates;
+    notes.push_back(
+        "agglomerates null: not wired into analyze yet (name clash between "
+        "analysis/velocity_grid and meshfree/mls; see src/render/analyze_run.cpp)");
+  }
+
+  r.summary_path = run_dir / "analysis" / "summary.json";
+  write_file_atomically(r.summary_path.string(), json_document(r, run_dir));
+  return r;
+}
+
+}  // namespace sg

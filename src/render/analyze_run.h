@@ -1,0 +1,59 @@
+#pragma once
+// `softgrain analyze RUN_DIR`: the analysis library (src/analysis/) applied to a run
+// folder, with every input it needs gathered and every gap reported, never guessed.
+//
+//   series.csv        -> steady window, friction (when the shear-cell bodies "top" and
+//                        "bottom" have columns), energy budget
+//   grains/NNNNNN.csv -> velocity profiles, solid fraction, agglomerates (paper 002),
+//                        times from fields.pvd (same snapshot numbers)
+//   run.log           -> the scenario -> L, V, D, E, c, alpha; body names (walls and
+//                        driven bodies are removed from the grain snapshots)
+//   options           -> override any of these
+//
+// Writes RUN_DIR/analysis/summary.json (analysis/summary.h layout, plus "parameters": each
+// run parameter with its value and where it came from, and "notes": what could not be
+// computed and why) and RUN_DIR/analysis/profiles.csv, both atomically.
+//
+// Lives in render/ only because it needs the scenario layer (for run.log's scenario) and
+// render is the first stage above io; it belongs in analysis/ once that stage links io.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "analysis/profiles.h"
+#include "analysis/run_parameters.h"
+#include "analysis/summary.h"
+
+namespace sg {
+
+struct AnalyzeOptions {
+  std::optional<std::pair<double, double>> window;  // [t0, t1]; unset: MSER or whole run
+  RunParameters given;                              // NaN = not given, take from the run
+  std::optional<std::pair<double, double>> layer;   // [y_min, y_max] of the layer
+  int profile_bins = 0;                             // 0: two per mean grain diameter
+  bool agglomerates = true;
+};
+
+struct ParameterSource {
+  std::string key;     // "length", "gap", ...
+  double value = 0.0;  // NaN if unknown
+  std::string unit;
+  std::string source;  // "option", "scenario ...", "grains/*.csv", "unknown"
+};
+
+struct AnalyzeResult {
+  AnalysisSummary summary;
+  RunParameters parameters;
+  std::vector<ParameterSource> parameter_sources;
+  std::vector<std::string> notes;  // what was not computed and why; choices made
+  std::optional<VelocityProfile> profile;
+  std::filesystem::path summary_path, profile_path;  // profile_path empty if none
+};
+
+// Throws sg::Error only when the run folder itself is unusable (no or malformed
+// series.csv); anything that merely cannot be computed becomes null plus a note.
+AnalyzeResult analyze_run(const std::filesystem::path& run_dir, const AnalyzeOptions& options);
+
+}  // namespace sg
