@@ -78,6 +78,9 @@ VtuMesh read_vtu(const std::filesystem::path& path) {
   const std::string text = read_text(path);
   SG_VERIFY(text.find("type=\"UnstructuredGrid\"") != std::string::npos,
             path.string() << ": not a VTK UnstructuredGrid file");
+  // Our writer always closes the document: a file without its end was cut short.
+  SG_VERIFY(text.find("</VTKFile>") != std::string::npos,
+            path.string() << ": truncated (no closing </VTKFile>)");
   const auto piece = text.find("<Piece ");
   SG_VERIFY(piece != std::string::npos, path.string() << ": no <Piece>");
   const std::string piece_tag = text.substr(piece, text.find('>', piece) - piece);
