@@ -16,6 +16,7 @@ struct RenderArguments {
   std::vector<double> range;
   std::string frames = "all";
   bool no_movie = false;
+  bool robust = false;
 };
 
 std::pair<int, int> parse_size(const std::string& text) {
@@ -46,6 +47,8 @@ const Registration registration(
        cmd->add_option("--frames", args->frames, "all | last")
            ->check(CLI::IsMember({"all", "last"}))
            ->capture_default_str();
+       cmd->add_flag("--robust", args->robust,
+                     "colour range from the 1st to the 99th percentile over all frames");
        cmd->add_flag("--no-movie", args->no_movie, "do not make an MP4 even if ffmpeg is present");
        return std::function<int()>([args] {
          RenderOptions options;
@@ -55,6 +58,7 @@ const Registration registration(
            options.range = std::make_pair(args->range[0], args->range[1]);
          options.last_frame_only = args->frames == "last";
          options.movie = !args->no_movie;
+         options.robust_range = args->robust;
          const std::filesystem::path dir(args->run_dir);
          const RunInfo run = read_run_info(dir);
          if (run.has_scenario) {
@@ -71,7 +75,10 @@ const Registration registration(
                    << "\n";
          if (r.has_range)
            std::cout << "  colour range [" << r.range_min << ", " << r.range_max << "]"
-                     << (options.range ? " (given)" : " (over all frames)") << "\n";
+                     << (options.range          ? " (given)"
+                         : options.robust_range ? " (1st-99th percentile over all frames)"
+                                                : " (min-max over all frames)")
+                     << "\n";
          if (!r.movie.empty()) std::cout << "  movie: " << r.movie.string() << "\n";
          if (!r.note.empty()) std::cout << "  note: " << r.note << "\n";
          return 0;

@@ -30,8 +30,10 @@ struct Bounds {
   bool empty() const { return !(x1 >= x0 && y1 >= y0); }
 };
 
-// Min and max of the field over the points of the cells it colours.
-void accumulate_range(const VtuMesh& mesh, const std::string& field, double& lo, double& hi) {
+// Min and max of the field over the points of the cells it colours (each value also
+// appended to `values` when given).
+void accumulate_range(const VtuMesh& mesh, const std::string& field, double& lo, double& hi,
+                      std::vector<double>* values = nullptr) {
   const std::vector<double> value = point_scalar(mesh, field);
   const bool rigid_too = field_defined_on_rigid(field);
   for (std::size_t c = 0; c < mesh.cell_count(); ++c) {
@@ -41,8 +43,15 @@ void accumulate_range(const VtuMesh& mesh, const std::string& field, double& lo,
       if (!std::isfinite(v)) continue;
       lo = std::min(lo, v);
       hi = std::max(hi, v);
+      if (values) values->push_back(v);
     }
   }
+}
+
+double quantile(std::vector<double>& v, double q) {
+  const auto k = static_cast<std::size_t>(std::lround(q * static_cast<double>(v.size() - 1)));
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+  return v[k];
 }
 
 std::string unit_of(const std::string& field) {
@@ -434,12 +443,13 @@ RenderResult render_run(const fs::path& run_dir, const RenderOptions& options) {
   // Pass 1, over every frame: the drawing box and the colour range, fixed for the series.
   Bounds world;
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  std::vector<double> values;  // every coloured value, for the robust range and the hint
   for (const auto& e : entries) {
     const VtuMesh m = read_vtu(e.file);
     for (const Vec2& p : m.points)
       world.add(p);
     if (!style.categorical && !options.range)
-      accumulate_range(m, options.field, lo, hi);
+      accumulate_range(m, options.field, lo, hi, &values);
     else
       (void)point_scalar(m, options.field);  // fail early on an unknown field
   }
@@ -453,6 +463,15 @@ RenderResult render_run(const fs::path& run_dir, const RenderOptions& options) {
     if (options.range) {
       lo = options.range->first;
       hi = options.range->second;
+    } else if (!values.empty()) {
+      const double q01 = quantile(values, 0.01), q99 = quantile(values, 0.99);
+      if (options.robust_range) {
+        lo = q01;
+        hi = q99;
+      } else if (hi > lo && q99 - q01 < 0.2 * (hi - lo)) {
+        result.note = "98% of the values lie in [" + format_number(q01) + ", " +
+                      format_number(q99) + "], a fifth of the full range: try --robust or --range";
+      }
     }
     SG_VERIFY(hi >= lo, "field '" << options.field
                                   << "': no point of any snapshot is coloured by it"
@@ -487,10 +506,13 @@ RenderResult render_run(const fs::path& run_dir, const RenderOptions& options) {
   }
 
   // The movie: ffmpeg if present; frames must be numbered consecutively.
+  auto add_note = [&](const std::string& n) {
+    result.note += (result.note.empty() ? "" : "; ") + n;
+  };
   if (!options.movie || result.images.size() < 2) {
-    result.note = options.movie ? "one frame: no movie" : "";
+    if (options.movie) add_note("one frame: no movie");
   } else if (!on_path("ffmpeg")) {
-    result.note = "ffmpeg not found on PATH: no movie (the PNG frames are written)";
+    add_note("ffmpeg not found on PATH: no movie (the PNG frames are written)");
   } else {
     const fs::path mp4 = out_dir / (options.field + ".mp4");
     const std::string start = entries.front().file.stem().string();
@@ -502,7 +524,7 @@ RenderResult render_run(const fs::path& run_dir, const RenderOptions& options) {
     if (std::system(cmd.str().c_str()) == 0)
       result.movie = mp4;
     else
-      result.note = "ffmpeg failed: no movie (command: " + cmd.str() + ")";
+      add_note("ffmpeg failed: no movie (command: " + cmd.str() + ")");
   }
   return result;
 }

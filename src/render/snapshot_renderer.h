@@ -11,7 +11,8 @@
 //
 // The colour range is one for the whole series (so that a movie does not flicker and two
 // frames compare by colour): the one given, else min and max of the field over every
-// frame, taken over the points of the cells that are coloured by it. Periodic runs are
+// frame, taken over the points of the cells that are coloured by it (or its 1st-99th
+// percentiles with robust_range). Periodic runs are
 // drawn over one period, bodies crossing the seam wrapped to both sides.
 #include <filesystem>
 #include <optional>
@@ -27,6 +28,10 @@ struct RenderOptions {
   std::string field = "von_mises";                 // a point field of the .vtu, or velocity, body
   int width = 1200, height = 800;                  // pixels
   std::optional<std::pair<double, double>> range;  // colour range; unset: over all frames
+  // Unset range: false = min and max over all frames; true = the 1st and 99th percentiles
+  // of the coloured values over all frames (a few contact-node spikes otherwise squeeze
+  // every grain into the bottom colour).
+  bool robust_range = false;
   bool last_frame_only = false;
   std::optional<std::pair<double, double>> periodic;  // x span [x_min, x_max) if periodic
   std::string title;                                  // e.g. the run name
