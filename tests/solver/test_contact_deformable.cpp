@@ -184,5 +184,209 @@ TEST(Hertz, DiscBetweenRigidPlatesConvergesToLineContact) {
   }
 }
 
+// Two undamped deformable discs of unequal size (R = 0.5 and 0.35, h = 0.06), the larger one
+// thrown at the smaller one at rest, head-on, frictionless.
+//
+// Momentum: contact forces are equal and opposite at the contact point and are spread to the
+// MLS parameters with N_J(X_I), which sum to 1 (partition of unity); internal forces sum to
+// zero. The sum of m v over the parameters is therefore conserved up to round-off: ~1e-16 per
+// step relative to the forces times dt, over ~1000 steps: 1e-12 is a bound with margin.
+//
+// Energy: K + E_el + contact springs, at the first step vs after separation. Nothing dissipates
+// (undamped, frictionless); what symplectic Euler loses is O((omega dt)^2) in the excited modes
+// plus the energy a contact spring gains or loses when a node enters or leaves it between steps
+// (O(k g dt v) per event). 2% is the bound.
+TEST(Impact, HeadOnDeformableDiscsConserveMomentumAndEnergy) {
+  Model model;
+  const MaterialId m = model.add_material(scenes::elastic_material());
+  const double h = 0.06, speed = 0.3;
+  const BodyId a = scenes::add_disc(model, m, Vec2(-0.52, 0), 0.5, h, "a");
+  const BodyId b = scenes::add_disc(model, m, Vec2(0.37, 0), 0.35, h, "b");
+  set_rigid_velocity(model, a, Vec2(speed, 0), 0.0);
+  const double estar = 10.0 / (1.0 - 0.09), kn = 10.0 * estar / h;
+  ContactSettings settings;
+  settings.cutoff = 0.5 * h;
+  ContactSystem contacts(model, scenes::single_law(model, frictionless(kn)), settings);
+  const double dt = estimate_stable_time_step(model, 0.5, kn).dt;
+  ExplicitSolver solver(model, &contacts);
+  const Vec2 p0 = linear_momentum(model);
+  auto body_momentum = [&](BodyId body) {
+    const Body& bd = model.bodies[static_cast<std::size_t>(body)];
+    double px = 0.0;
+    for (int i = bd.node_begin; i < bd.node_end; ++i)
+      px += model.nodes.mass[static_cast<std::size_t>(i)] *
+            model.nodes.vx[static_cast<std::size_t>(i)];
+    return px;
+  };
+  bool touched = false;
+  long separated_at = -1, steps = 0;
+  double worst_momentum = 0.0;
+  // Run until 200 steps after the last contact record disappeared (separation).
+  for (; steps < 20000; ++steps) {
+    solver.step(dt);
+    worst_momentum = std::max(worst_momentum, (linear_momentum(model) - p0).norm() / p0.norm());
+    const bool in_contact = !contacts.records().empty();
+    touched = touched || in_contact;
+    if (touched && !in_contact && separated_at < 0) separated_at = steps;
+    if (touched && in_contact) separated_at = -1;
+    if (separated_at >= 0 && steps - separated_at > 200) break;
+  }
+  const EnergyLedger& e = solver.state().energy;
+  const double before = e.initial_kinetic + e.initial_elastic;
+  const double after = e.kinetic + e.elastic + e.contact_elastic;
+  const double pa = body_momentum(a), pb = body_momentum(b);
+  std::printf(
+      "impact: %ld steps of %.3g; max |dp|/|p| = %.2e; energy %.6g -> %.6g (%.3f%% lost); "
+      "momentum a %.5f, b %.5f (total %.5f)\n",
+      steps, dt, worst_momentum, before, after, 100.0 * (before - after) / before, pa, pb, p0.x());
+  ASSERT_TRUE(touched);
+  ASSERT_GE(separated_at, 0) << "the discs did not separate";
+  EXPECT_LT(worst_momentum, 1e-12);
+  EXPECT_LT(std::abs(before - after), 0.02 * before);
+  // The smaller disc was set moving forward, the larger one slowed down (a rigid-disc elastic
+  // collision would give the mass ratio; the deformable ones keep part of the energy in
+  // vibration, so only the direction is checked).
+  EXPECT_GT(pb, 0.5 * p0.x());
+  EXPECT_LT(pa, 0.5 * p0.x());
+}
+
+// A disc (R = 0.5, h = 0.07, E = 10, c_p = 3.67) thrown at a fixed rigid wall occupying
+// 0 <= x <= 0.5 (7 h thick), stepping at the full estimated stable step (safety 1.0) with the
+// penalty k_n = 10 E* / h. Returns the largest x any contour point reached (its penetration into
+// the wall); fails if a point goes deeper than the contour cutoff 0.5 h at any step, or if the
+// disc does not come back at more than half its speed.
+//
+// At these speeds a node travels V dt = 0.07 to 0.13 h per step, well inside the cutoff, so a
+// contact is always caught before the node reaches the wall. What remains is the penalty
+// overlap p / (2 k_n) under the peak contact pressure p, which grows with the impact force, i.e.
+// about linearly with V: doubling V must not more than ~double the penetration (a missed or late
+// detection would instead jump by a step's travel). Beyond V ~ 2.5 = 0.7 c_p the grain itself
+// inverts at the contact (strain ~ V / c_p), which is a material limit, not a contact one.
+double deepest_contour_point(double speed) {
+  Model model;
+  const MaterialId m = model.add_material(scenes::elastic_material());
+  const double h = 0.07, radius = 0.5;
+  const BodyId disc = scenes::add_disc(model, m, Vec2(-radius - 0.05, 0), radius, h);
+  const MaterialId w = model.add_material(scenes::rigid_material());
+  const BodyId wall = model.add_rigid_body("wall", make_rectangle(Vec2(0, -1), Vec2(0.5, 1), h), w);
+  scenes::fix_rigid(model, wall);
+  set_rigid_velocity(model, disc, Vec2(speed, 0), 0.0);
+  const double estar = 10.0 / (1.0 - 0.09), kn = 10.0 * estar / h;
+  ContactSettings settings;
+  settings.cutoff = 0.5 * h;
+  ContactSystem contacts(model, scenes::single_law(model, frictionless(kn)), settings);
+  const double dt = estimate_stable_time_step(model, 1.0, kn).dt;
+  ExplicitSolver solver(model, &contacts);
+  const Body& body = model.bodies[static_cast<std::size_t>(disc)];
+  double deepest = -1.0;
+  long steps = 0;
+  for (; steps < 4000; ++steps) {
+    solver.step(dt);
+    for (int i = body.node_begin; i < body.boundary_end; ++i)
+      deepest = std::max(deepest, node_position(model, i).x());
+    EXPECT_LT(deepest, 0.5 * h) << "contour point through the wall at step " << steps;
+    if (deepest >= 0.5 * h) break;
+    if (linear_momentum(model).x() < -0.5 * speed * total_mass(model)) break;
+  }
+  const double vx = linear_momentum(model).x() / total_mass(model);
+  std::printf(
+      "tunnelling at V = %.2f: dt = %.3g (V dt = %.3g h), deepest contour point x = %.3e "
+      "(%.3f h), rebound velocity %.4f after %ld steps\n",
+      speed, dt, speed * dt / h, deepest, deepest / h, vx, steps);
+  EXPECT_LT(vx, -0.5 * speed) << "no rebound at V = " << speed;
+  return deepest;
+}
+
+TEST(NoTunnelling, FastGrainBouncesOffRigidWallAtTheStableStep) {
+  // Measured: 0.103 h at V = 0.75, 0.198 h at V = 1.5 (0.41 c_p).
+  const double slow = deepest_contour_point(0.75), fast = deepest_contour_point(1.5);
+  EXPECT_GT(slow, 0.0);
+  EXPECT_LT(fast, 2.5 * slow) << "penetration grows faster than the impact force";
+}
+
+// A rigid disc pressed into a deformable one (oblique, overlapping by 0.03), with a Coulomb law
+// and a tangential motion between two evaluations so that both normal and tangential forces
+// act. add_contact_forces on zeroed force arrays: the sum of the forces on the deformable
+// body's parameters is exactly the sum of the forces at its contour points (partition of
+// unity, up to round-off), and each node-to-segment pair puts +f and -(1 - t) f - t f on the
+// two bodies, so the rigid body's force equals minus that sum to ~1e-15 relative.
+// With the frictionless law the moments balance too: each pair's moment is
+// (x_slave - projection) x f = g n x l p_n n = 0, and the moment of the parameter forces about
+// the origin, sum_J (X_J + u_J) x f_J, equals x_I x f at the contour point because
+// sum_J N_J(X_I) (X_J + u_J) = x_I (linear reproduction).
+TEST(Mixed, RigidAndDeformableGrainsReceiveOppositeContactForces) {
+  for (const ContactLawKind kind : {ContactLawKind::frictionless, ContactLawKind::coulomb}) {
+    Model model;
+    const MaterialId m = model.add_material(scenes::elastic_material());
+    const double h = 0.05;
+    const BodyId soft = scenes::add_disc(model, m, Vec2(0, 0), 0.5, h, "soft");
+    Mat2 f = Mat2::Identity();
+    f(0, 0) = 1.02;
+    f(0, 1) = 0.01;
+    set_affine_deformation(model, soft, f);  // a deformed state: u != 0
+    const MaterialId w = model.add_material(scenes::rigid_material());
+    const Vec2 c(0.3, 0.8);
+    const BodyId hard = model.add_rigid_body(
+        "hard", make_disc(c + (0.51 + 0.5 - 0.03) * Vec2(0.3, 0.8).normalized() - c, 0.5, h), w);
+    ContactLawParams law = frictionless(1e3);
+    if (kind == ContactLawKind::coulomb) {
+      law.kind = ContactLawKind::coulomb;
+      law.tangential_stiffness = 1e3;
+      law.friction = 0.5;
+    }
+    ContactSettings settings;
+    settings.cutoff = 0.5 * h;
+    ContactSystem contacts(model, scenes::single_law(model, law), settings);
+    auto evaluate = [&] {
+      std::fill(model.nodes.fx.begin(), model.nodes.fx.end(), 0.0);
+      std::fill(model.nodes.fy.begin(), model.nodes.fy.end(), 0.0);
+      std::fill(model.rigid.fx.begin(), model.rigid.fx.end(), 0.0);
+      std::fill(model.rigid.fy.begin(), model.rigid.fy.end(), 0.0);
+      std::fill(model.rigid.torque.begin(), model.rigid.torque.end(), 0.0);
+      contacts.add_contact_forces(model);
+    };
+    evaluate();
+    // Slide the rigid disc tangentially (and rotate it) by a small amount: stick forces.
+    const std::size_t r =
+        static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(hard)].rigid_index);
+    model.rigid.x[r] += 0.004;
+    model.rigid.y[r] -= 0.0015;
+    model.rigid.theta[r] += 0.003;
+    evaluate();
+    ASSERT_FALSE(contacts.records().empty());
+    Vec2 soft_force = Vec2::Zero();
+    double soft_moment = 0.0, tangential = 0.0;
+    const Body& sb = model.bodies[static_cast<std::size_t>(soft)];
+    for (int i = sb.node_begin; i < sb.node_end; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      const Vec2 fi(model.nodes.fx[k], model.nodes.fy[k]);
+      soft_force += fi;
+      soft_moment += cross(
+          Vec2(model.nodes.ref_x[k] + model.nodes.ux[k], model.nodes.ref_y[k] + model.nodes.uy[k]),
+          fi);
+    }
+    for (const ContactRecord& rec : contacts.records())
+      tangential += std::abs(rec.traction.tangential) * rec.length;
+    const Vec2 hard_force(model.rigid.fx[r], model.rigid.fy[r]);
+    const double hard_moment =
+        model.rigid.torque[r] + cross(Vec2(model.rigid.x[r], model.rigid.y[r]), hard_force);
+    const double scale = hard_force.norm();
+    std::printf(
+        "mixed (%s): %zu records, rigid force (%.6g, %.6g), deformable (%.6g, %.6g), "
+        "|sum| / |F| = %.2e, tangential %.3g, moment sum %.2e\n",
+        contact_law_kind_name(kind), contacts.records().size(), hard_force.x(), hard_force.y(),
+        soft_force.x(), soft_force.y(), (hard_force + soft_force).norm() / scale, tangential,
+        hard_moment + soft_moment);
+    ASSERT_GT(scale, 0.0);
+    EXPECT_LT((hard_force + soft_force).norm(), 1e-12 * scale);
+    if (kind == ContactLawKind::coulomb) {
+      EXPECT_GT(tangential, 0.01 * scale) << "no tangential force: the test is not exercised";
+    } else {
+      // Moment arm ~ 1 (the contact is ~1 from the origin).
+      EXPECT_LT(std::abs(hard_moment + soft_moment), 1e-12 * scale);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace sg
