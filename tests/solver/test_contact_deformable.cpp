@@ -388,5 +388,90 @@ TEST(Mixed, RigidAndDeformableGrainsReceiveOppositeContactForces) {
   }
 }
 
+// Two deformable blocks (1 x 0.5 each, h = 0.05) bonded face to face by a cohesive law of
+// strength c = sigma_c = tau_c = 0.2 over the length L = 1, each glued to a rigid grip by a law
+// ten times stronger; the lower grip is fixed, the upper one pulled up at 0.01 (the elastic
+// stretch at failure, c / E = 0.02 over the unit height, takes 2 time units, ~7 P-wave transits:
+// quasi-static). The peak force the lower grip receives is the pull-off force, c L in theory
+// (the two passes each carry c / 2). The blocks have nu = 0 so that the stress under the grips
+// is uniform (no lateral contraction restrained by the grips, hence no edge concentration that
+// would break the interface progressively from its ends); 5% allows for the discrete tributary
+// lengths and the dynamics of the breaking (as in the rigid-block test).
+//
+// DISABLED: fails on the current engine (reported, not fixed here). Undamped at 0.8 of the
+// estimated stable step the energy ledger residual reaches -1e-3 by t = 1.25 (energy created:
+// the kinetic energy is only 7.5e-5) and the interface breaks progressively at a total normal
+// force of 0.068 (0.34 c L); at 0.2 of the step it breaks at 0.097, with a residual of -3e-5;
+// with damping alpha = 0.01 on the blocks the residual stays ~1e-7 and the interface holds up
+// to 0.175 (0.88 c L). Enable once bonded contacts between deformable bodies conserve energy.
+TEST(CohesiveDeformable, DISABLED_BondedBlocksSeparateAtSigmaTimesLength) {
+  Model model;
+  MaterialDef soft_def = scenes::elastic_material(MaterialLaw::neo_hookean, 0.0, 0.0);
+  soft_def.name = "soft";
+  const MaterialId soft = model.add_material(soft_def);
+  const MaterialId grip = model.add_material(scenes::rigid_material("grip"));
+  const double h = 0.05, c = 0.2, length = 1.0;
+  model.add_deformable_body("lower", make_rectangle(Vec2(0, -0.5), Vec2(length, 0), h), soft,
+                            scenes::discretization(h));
+  model.add_deformable_body("upper", make_rectangle(Vec2(0, 0), Vec2(length, 0.5), h), soft,
+                            scenes::discretization(h));
+  const BodyId bottom =
+      model.add_rigid_body("bottom", make_rectangle(Vec2(0, -0.7), Vec2(length, -0.5), h), grip);
+  const BodyId top =
+      model.add_rigid_body("top", make_rectangle(Vec2(0, 0.5), Vec2(length, 0.7), h), grip);
+  scenes::fix_rigid(model, bottom);
+  scenes::fix_rigid(model, top);
+  scenes::drive_of(model, top).velocity[1] = PiecewiseLinear{{0.0, 2.0}, {0.0, 0.01}};
+  const double kn = 10.0 * soft_def.young / h;
+  auto cohesive = [&](double strength) {
+    ContactLawParams law;
+    law.kind = ContactLawKind::cohesive;
+    law.normal_stiffness = kn;
+    law.tangential_stiffness = kn;
+    law.adhesion = strength;
+    law.shear_strength = strength;
+    return law;
+  };
+  MaterialPairTable laws({"soft", "grip"});
+  laws.set(soft, soft, cohesive(c));
+  laws.set(soft, grip, cohesive(10.0 * c));
+  laws.set(grip, grip, frictionless(kn));
+  ContactSettings settings;
+  settings.cutoff = 0.5 * h;
+  ContactSystem contacts(model, laws, settings);
+  const double dt = estimate_stable_time_step(model, 0.8, kn).dt;
+  ExplicitSolver solver(model, &contacts);
+  const std::size_t r =
+      static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(bottom)].rigid_index);
+  // Records between the two blocks still carrying load (the interface bonds).
+  auto interface_bonds = [&] {
+    int n = 0;
+    for (const ContactRecord& rec : contacts.records())
+      if (model.bodies[static_cast<std::size_t>(rec.slave_body)].kind == BodyKind::deformable &&
+          model.bodies[static_cast<std::size_t>(rec.master_body)].kind == BodyKind::deformable)
+        ++n;
+    return n;
+  };
+  // The peak is taken while the interface holds: once it has broken, the released blocks ring
+  // against their grips (undamped), which is not the pull-off force.
+  double peak = 0.0;
+  bool broken = false;
+  while (solver.state().time < 6.0) {
+    solver.step(dt);
+    broken = broken || interface_bonds() == 0;
+    if (!broken) peak = std::max(peak, model.rigid.fy[r]);  // the pull on the bottom grip is +y
+  }
+  const double final_force = model.rigid.fy[r];
+  const int bonds_left = interface_bonds();
+  std::printf(
+      "cohesive deformable: peak %.5g vs sigma_c L = %.5g (%+.2f%%), force at the end %.3g, "
+      "dissipated %.4g\n",
+      peak, c * length, 100.0 * (peak / (c * length) - 1.0), final_force,
+      solver.state().energy.contact_dissipated);
+  EXPECT_NEAR(peak, c * length, 0.05 * c * length);
+  EXPECT_EQ(bonds_left, 0) << "the blocks did not separate";
+  EXPECT_GT(solver.state().energy.contact_dissipated, 0.0);
+}
+
 }  // namespace
 }  // namespace sg
