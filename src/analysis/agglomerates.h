@@ -39,7 +39,7 @@ namespace sg {
 
 struct AgglomerateParams {
   double grid_spacing = 1.0;  // Delta x = Delta y, paper 002: 1 (one mean grain diameter)
-  MlsParams interpolation;    // support radius default 2 diameters
+  VelocityFitParams interpolation;    // support radius default 2 diameters
   CoherenceParams coherence;  // R default 2.5 diameters
   double threshold = 0.8;     // |C| > threshold, paper 002 §2.2
 };

@@ -53,15 +53,8 @@ CellList build_cells(const std::vector<Vec2>& wrapped, const RegularGrid& g, dou
 
 }  // namespace
 
-double cubic_spline_weight(double q) {
-  // Exactly 0 at and beyond the support (the polynomial gives -2e-16 at q = 1).
-  if (q >= 1.0) return 0.0;
-  if (q <= 0.5) return 2.0 / 3.0 - 4.0 * q * q + 4.0 * q * q * q;
-  return 4.0 / 3.0 - 4.0 * q + 4.0 * q * q - 4.0 / 3.0 * q * q * q;
-}
-
 VelocityGrid interpolate_velocity_grid(const GrainSnapshot& grains, const RegularGrid& grid,
-                                       const MlsParams& params) {
+                                       const VelocityFitParams& params) {
   const double rho = params.support_radius;
   SG_VERIFY(rho > 0.0, "velocity grid: support radius " << rho << " is not positive");
   SG_VERIFY(2.0 * rho < grid.length, "velocity grid: support radius "

@@ -1,4 +1,5 @@
 #pragma once
+#include "meshfree/mls.h"  // cubic_spline_weight
 // Grain centre-of-mass velocities carried to the regular grid of the coherence analysis
 // (paper 002 §2.2: "interpolated ... cubic, which allows C^2 continuity").
 //
@@ -38,7 +39,7 @@ struct VelocityGrid {
   std::vector<unsigned char> valid;  // 1 where the MLS fit is defined
 };
 
-struct MlsParams {
+struct VelocityFitParams {
   double support_radius = 2.0;  // rho (length); default 2 mean grain diameters
   int min_grains = 3;           // fewest grains in the support for a defined fit
   // Smallest accepted ratio of eigenvalues of the (scaled) moment matrix; below it the
@@ -46,12 +47,11 @@ struct MlsParams {
   double min_eigen_ratio = 1e-6;
 };
 
-// The C^2 cubic-spline weight, W(q) for q = r / rho (Belytschko et al. 1994 eq. 12 style):
-//   2/3 - 4q^2 + 4q^3 (q <= 1/2),  4/3 - 4q + 4q^2 - 4q^3/3 (1/2 < q <= 1),  0 beyond.
-double cubic_spline_weight(double q);
+// The weight is the same C^2 cubic spline as the meshfree shape functions
+// (meshfree/mls.h: cubic_spline_weight).
 
 // Throws sg::Error if rho >= L/2 (a grain would be seen through both periodic images).
 VelocityGrid interpolate_velocity_grid(const GrainSnapshot& grains, const RegularGrid& grid,
-                                       const MlsParams& params);
+                                       const VelocityFitParams& params);
 
 }  // namespace sg

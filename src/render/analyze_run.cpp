@@ -306,16 +306,13 @@ AnalyzeResult analyze_run(const fs::path& run_dir, const AnalyzeOptions& options
         notes.push_back(std::string("solid fraction not computed: ") + e.what());
       }
     }
-    // Agglomerates (paper 002): not wired yet. analysis/velocity_grid.{h,cpp} and
-    // meshfree/mls.{h,cpp} both define sg::MlsParams and sg::cubic_spline_weight, so an
-    // executable that links the agglomerate code next to the engine fails to link (and one
-    // translation unit cannot include both headers). Once the analysis names are made its
-    // own, call detect_agglomerates + compute_agglomerate_statistics here (periodic grid of
-    // one mean diameter over [y0, y1], MLS support 2 d, coherence radius 2.5 d).
+    // Agglomerates (paper 002): not wired yet (the name clash between analysis/velocity_grid
+    // and meshfree/mls that blocked it is resolved). Next: call detect_agglomerates +
+    // compute_agglomerate_statistics here (periodic grid of one mean diameter over [y0, y1],
+    // MLS support 2 d, coherence radius 2.5 d).
     (void)options.agglomerates;
     notes.push_back(
-        "agglomerates null: not wired into analyze yet (name clash between "
-        "analysis/velocity_grid and meshfree/mls; see src/render/analyze_run.cpp)");
+        "agglomerates null: not wired into analyze yet (see src/render/analyze_run.cpp)");
   }
 
   r.summary_path = run_dir / "analysis" / "summary.json";

@@ -6,7 +6,7 @@
 // files number bodies, they do not name them).
 //
 // The header deliberately does not include scenario/scenario.h: meshfree/mls.h (through
-// the scenario) and analysis/velocity_grid.h both define sg::MlsParams, so one translation
+// the scenario) and analysis/velocity_grid.h both define sg::VelocityFitParams, so one translation
 // unit cannot include both.
 #include <filesystem>
 #include <optional>

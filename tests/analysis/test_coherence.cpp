@@ -183,7 +183,7 @@ TEST(VelocityGrid, LinearFieldsReachTheGridExactly) {
   const RegularGrid grid = make_periodic_grid(0.0, length, 1.0, 9.0, 1.0);
   auto affine = [](const Vec2& p) -> Vec2 { return Vec2(0.2 + 0.05 * p.y(), -0.1 + 0.03 * p.y()); };
   const GrainSnapshot grains = scatter(length, 0.0, 10.0, 5, affine);
-  const VelocityGrid v = interpolate_velocity_grid(grains, grid, MlsParams{});
+  const VelocityGrid v = interpolate_velocity_grid(grains, grid, VelocityFitParams{});
   for (int j = 0; j < grid.ny; ++j)
     for (int i = 0; i < grid.nx; ++i) {
       const std::size_t n = grid.index(i, j);
@@ -209,7 +209,7 @@ TEST(VelocityGrid, RigidRotationOfGrainsGivesCoherenceOne) {
       patch.area.push_back(grains.area[k]);
       patch.body.push_back("g");
     }
-  const VelocityGrid v = interpolate_velocity_grid(patch, grid, MlsParams{});
+  const VelocityGrid v = interpolate_velocity_grid(patch, grid, VelocityFitParams{});
   EXPECT_FALSE(v.valid[grid.index(5, 10)]);  // no grain within 2 of x = 5
   const CoherenceField c = compute_coherence(v, CoherenceParams{});
   int checked = 0;
@@ -230,7 +230,7 @@ TEST(VelocityGrid, ShiftingTheGrainsAcrossTheSeamShiftsTheGrid) {
   test::Gaussian noise(4);
   GrainSnapshot grains =
       scatter(length, 0.0, 10.0, 3, [&](const Vec2&) -> Vec2 { return Vec2(noise(), noise()); });
-  const VelocityGrid v0 = interpolate_velocity_grid(grains, grid, MlsParams{});
+  const VelocityGrid v0 = interpolate_velocity_grid(grains, grid, VelocityFitParams{});
   const CoherenceField c0 = compute_coherence(v0, CoherenceParams{});
   for (const int k : {3, 12, 24}) {
     GrainSnapshot moved = grains;
@@ -238,7 +238,7 @@ TEST(VelocityGrid, ShiftingTheGrainsAcrossTheSeamShiftsTheGrid) {
       p.x() += k * grid.hx;
       if (p.x() >= length) p.x() -= length;
     }
-    const VelocityGrid vk = interpolate_velocity_grid(moved, grid, MlsParams{});
+    const VelocityGrid vk = interpolate_velocity_grid(moved, grid, VelocityFitParams{});
     const CoherenceField ck = compute_coherence(vk, CoherenceParams{});
     for (int j = 0; j < grid.ny; ++j)
       for (int i = 0; i < grid.nx; ++i) {
@@ -252,10 +252,10 @@ TEST(VelocityGrid, ShiftingTheGrainsAcrossTheSeamShiftsTheGrid) {
   GrainSnapshot far = grains;
   for (auto& p : far.position)
     p.x() += 3.0 * length;
-  const VelocityGrid vf = interpolate_velocity_grid(far, grid, MlsParams{});
+  const VelocityGrid vf = interpolate_velocity_grid(far, grid, VelocityFitParams{});
   for (std::size_t n = 0; n < grid.size(); ++n)
     EXPECT_NEAR((vf.velocity[n] - v0.velocity[n]).norm(), 0.0, 1e-12);
-  EXPECT_THROW(interpolate_velocity_grid(grains, grid, MlsParams{13.0, 3, 1e-6}), Error);
+  EXPECT_THROW(interpolate_velocity_grid(grains, grid, VelocityFitParams{13.0, 3, 1e-6}), Error);
 }
 
 }  // namespace
