@@ -6,6 +6,10 @@
 #include "scenario/scenario.h"
 #include "tiny_run.h"
 
+#include <unistd.h>
+
+#include <string>
+
 namespace sg::test {
 namespace {
 
@@ -63,7 +67,9 @@ rigid = true
 
 const fs::path& tiny_run_dir() {
   static const fs::path dir = [] {
-    const fs::path root = fs::temp_directory_path() / "softgrain_test_render";
+    // One folder per process: ctest runs the tests of this binary in parallel processes.
+    const fs::path root =
+        fs::temp_directory_path() / ("softgrain_test_render_" + std::to_string(::getpid()));
     fs::remove_all(root);
     fs::create_directories(root);
     const fs::path scenario = root / "tiny.toml";

@@ -4,6 +4,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
+
+#include <unistd.h>
 
 #include "core/error.h"
 #include "io/run.h"
@@ -16,7 +19,8 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path write_temp(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / "softgrain_test_scenario";
+  const fs::path dir =
+      fs::temp_directory_path() / ("softgrain_test_scenario_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const fs::path p = dir / name;
   std::ofstream(p) << text;
@@ -87,7 +91,8 @@ std::string error_of(const std::string& text) {
 }
 
 TEST(Scenario, ValidFileRunsToACompleteFolder) {
-  const fs::path out = fs::temp_directory_path() / "softgrain_test_scenario" / "out";
+  const fs::path out =
+      fs::temp_directory_path() / ("softgrain_test_scenario_" + std::to_string(::getpid())) / "out";
   fs::remove_all(out);
   const ScenarioDef s = load_scenario(write_temp("tiny.toml", kValid));
   EXPECT_EQ(s.grains.size(), 2u);
