@@ -81,10 +81,10 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model) {
 
   // Group candidates by (slave point, master body): contiguous, since candidates are sorted
   // by (node, segment) and a body's segments are contiguous.
-  struct Group {
-    std::size_t begin, end;
-  };
-  std::vector<Group> groups;
+  // Scratch arrays are members reused from step to step: no allocation in the step once
+  // their capacity has grown.
+  std::vector<ContactGroup>& groups = groups_;
+  groups.clear();
   for (std::size_t i = 0; i < candidates.size();) {
     std::size_t j = i + 1;
     const int body = segment_body_[static_cast<std::size_t>(candidates[i].segment)];
@@ -107,14 +107,17 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model) {
     return ContactHistory{};
   };
 
-  std::vector<ContactRecord> results(groups.size());
-  std::vector<ContactHistory> new_history(groups.size());
-  std::vector<double> stored(groups.size(), 0.0);
+  std::vector<ContactRecord>& results = results_;
+  std::vector<ContactHistory>& new_history = new_history_;
+  std::vector<double>& stored = stored_;
+  results.assign(groups.size(), ContactRecord{});
+  new_history.assign(groups.size(), ContactHistory{});
+  stored.assign(groups.size(), 0.0);
   const int group_count = static_cast<int>(groups.size());
   const double period = model.x_max - model.x_min;
 #pragma omp parallel for schedule(static)
   for (int g = 0; g < group_count; ++g) {
-    const Group& group = groups[static_cast<std::size_t>(g)];
+    const ContactGroup& group = groups[static_cast<std::size_t>(g)];
     const ContactCandidate& first = candidates[group.begin];
     const int slave = first.node;
     const BodyId master = segment_body_[static_cast<std::size_t>(first.segment)];
@@ -188,7 +191,8 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model) {
 
   // Serial scatter in candidate order: deterministic whatever the thread count.
   ContactStepResult result;
-  std::vector<ContactHistoryEntry> next;
+  std::vector<ContactHistoryEntry>& next = next_histories_;
+  next.clear();
   records_.clear();
   NodeState& nodes = model.nodes;
   auto add_force_at_point = [&](int point, const Vec2& f, const Vec2& at) {
@@ -232,7 +236,7 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model) {
     if (new_history[g].active || new_history[g].stored_slip != 0.0)
       next.push_back({r.slave_point, r.master_body, new_history[g]});
   }
-  histories_ = std::move(next);
+  histories_.swap(next);
   previous_positions_ = positions_;
   return result;
 }

@@ -95,6 +95,15 @@ class ContactSystem {
   std::vector<double> tributary_;
   std::vector<ContactHistoryEntry> histories_;
   std::vector<ContactRecord> records_;
+  // Per-step scratch (reused, never checkpointed).
+  struct ContactGroup {
+    std::size_t begin, end;  // candidates of one (slave point, master body)
+  };
+  std::vector<ContactGroup> groups_;
+  std::vector<ContactRecord> results_;
+  std::vector<ContactHistory> new_history_;
+  std::vector<double> stored_;
+  std::vector<ContactHistoryEntry> next_histories_;
   void update_geometry(const Model& model);
 };
 
