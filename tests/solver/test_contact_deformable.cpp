@@ -403,7 +403,10 @@ TEST(Mixed, RigidAndDeformableGrainsReceiveOppositeContactForces) {
 // the kinetic energy is only 7.5e-5) and the interface breaks progressively at a total normal
 // force of 0.068 (0.34 c L); at 0.2 of the step it breaks at 0.097, with a residual of -3e-5;
 // with damping alpha = 0.01 on the blocks the residual stays ~1e-7 and the interface holds up
-// to 0.175 (0.88 c L). Enable once bonded contacts between deformable bodies conserve energy.
+// to 0.175 (0.88 c L). Tried: a contact frequency sqrt(2 k l sum N_J^2 / m_J) (the force
+// spread through the MLS row) in the stable step: this run then peaks at 0.262 (+31%), but
+// the estimate is *larger* steps elsewhere (shear cell, no-tunnelling test fails): reverted.
+// Enable once understood.
 TEST(CohesiveDeformable, DISABLED_BondedBlocksSeparateAtSigmaTimesLength) {
   Model model;
   MaterialDef soft_def = scenes::elastic_material(MaterialLaw::neo_hookean, 0.0, 0.0);
