@@ -6,7 +6,7 @@
 #include <limits>
 #include <sstream>
 
-#include "analysis/atomic_file.h"
+#include "io/atomic_file.h"
 #include "core/error.h"
 
 namespace sg {

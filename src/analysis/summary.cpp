@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "analysis/atomic_file.h"
+#include "io/atomic_file.h"
 
 namespace sg {
 namespace {

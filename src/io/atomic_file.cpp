@@ -8,6 +8,12 @@ namespace sg {
 
 void write_file_atomically(const std::filesystem::path& path,
                            const std::function<void(std::ostream&)>& write) {
+  std::error_code error;
+  if (path.has_parent_path()) {
+    std::filesystem::create_directories(path.parent_path(), error);
+    SG_VERIFY(!error,
+              "cannot create folder '" << path.parent_path().string() << "': " << error.message());
+  }
   std::filesystem::path temporary = path;
   temporary += ".tmp";
   {
@@ -17,10 +23,18 @@ void write_file_atomically(const std::filesystem::path& path,
     out.flush();
     SG_VERIFY(out, "failed writing '" << temporary.string() << "' (disk full?)");
   }
-  std::error_code error;
   std::filesystem::rename(temporary, path, error);
-  SG_VERIFY(!error, "cannot rename '" << temporary.string() << "' to '" << path.string()
-                                      << "': " << error.message());
+  if (error) {
+    std::filesystem::remove(temporary);
+    SG_THROW("cannot rename '" << temporary.string() << "' to '" << path.string()
+                               << "': " << error.message());
+  }
+}
+
+void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    out.write(content.data(), static_cast<std::streamsize>(content.size()));
+  });
 }
 
 }  // namespace sg

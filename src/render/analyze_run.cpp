@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "analysis/atomic_file.h"
+#include "io/atomic_file.h"
 #include "analysis/driven_body.h"
 #include "analysis/energy_budget.h"
 #include "analysis/friction.h"

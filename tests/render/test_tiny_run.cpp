@@ -4,6 +4,7 @@
 
 #include "io/run.h"
 #include "scenario/scenario.h"
+#include "scenes/tiny_scenario.h"
 #include "tiny_run.h"
 
 #include <unistd.h>
@@ -15,53 +16,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* kTiny = R"(
+const std::string kTiny = std::string(R"(
 name = "tiny"
 [time]
 duration = 0.06
 [output]
 series_period = 0.002
 field_period = 0.02
-[discretization]
-node_spacing = 0.15
-[[materials]]
-name = "soft"
-young = 10.0
-poisson = 0.3
-damping = 0.01
-[[materials]]
-name = "hard"
-young = 100.0
-[[contact_laws]]
-materials = ["soft", "hard"]
-law = "coulomb"
-normal_stiffness = 1000.0
-friction = 0.3
-[[contact_laws]]
-materials = ["soft", "soft"]
-law = "cohesive"
-normal_stiffness = 1000.0
-cohesion = 0.5
-[[contact_laws]]
-materials = ["hard", "hard"]
-law = "frictionless"
-normal_stiffness = 1000.0
-[[walls]]
-name = "floor"
-lower_left = [-2.0, -1.0]
-upper_right = [2.0, -0.5]
-material = "hard"
-[[grains]]
-center = [0.0, 0.0]
-radius = 0.5
-material = "soft"
-velocity = [0.0, -1.0]
-[[grains]]
-center = [1.2, 0.0]
-radius = 0.4
-material = "hard"
-rigid = true
-)";
+)") + scenes::kTinyScenarioBody;
 
 }  // namespace
 

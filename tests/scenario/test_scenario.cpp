@@ -12,6 +12,7 @@
 #include "io/run.h"
 #include "model/model.h"
 #include "scenario/scenario.h"
+#include "scenes/tiny_scenario.h"
 
 namespace sg {
 namespace {
@@ -27,52 +28,13 @@ fs::path write_temp(const std::string& name, const std::string& text) {
   return p;
 }
 
-const char* kValid = R"(
+const std::string kValid = std::string(R"(
 name = "tiny"
 [time]
 duration = 0.05
 [output]
 directory = "OUT"
-[discretization]
-node_spacing = 0.15
-[[materials]]
-name = "soft"
-young = 10.0
-poisson = 0.3
-damping = 0.01
-[[materials]]
-name = "hard"
-young = 100.0
-[[contact_laws]]
-materials = ["soft", "hard"]
-law = "coulomb"
-normal_stiffness = 1000.0
-friction = 0.3
-[[contact_laws]]
-materials = ["soft", "soft"]
-law = "cohesive"
-normal_stiffness = 1000.0
-cohesion = 0.5
-[[contact_laws]]
-materials = ["hard", "hard"]
-law = "frictionless"
-normal_stiffness = 1000.0
-[[walls]]
-name = "floor"
-lower_left = [-2.0, -1.0]
-upper_right = [2.0, -0.5]
-material = "hard"
-[[grains]]
-center = [0.0, 0.0]
-radius = 0.5
-material = "soft"
-velocity = [0.0, -1.0]
-[[grains]]
-center = [1.2, 0.0]
-radius = 0.4
-material = "hard"
-rigid = true
-)";
+)") + scenes::kTinyScenarioBody;
 
 std::string replace(std::string text, const std::string& from, const std::string& to) {
   const auto at = text.find(from);

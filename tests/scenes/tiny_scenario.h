@@ -1,0 +1,49 @@
+#pragma once
+// The body of a tiny scenario shared by tests (everything after the [time] and [output]
+// tables, which each test writes itself): two materials, three contact laws, a floor, a soft
+// disc thrown down and a rigid disc.
+
+namespace sg::scenes {
+
+inline constexpr const char* kTinyScenarioBody = R"([discretization]
+node_spacing = 0.15
+[[materials]]
+name = "soft"
+young = 10.0
+poisson = 0.3
+damping = 0.01
+[[materials]]
+name = "hard"
+young = 100.0
+[[contact_laws]]
+materials = ["soft", "hard"]
+law = "coulomb"
+normal_stiffness = 1000.0
+friction = 0.3
+[[contact_laws]]
+materials = ["soft", "soft"]
+law = "cohesive"
+normal_stiffness = 1000.0
+cohesion = 0.5
+[[contact_laws]]
+materials = ["hard", "hard"]
+law = "frictionless"
+normal_stiffness = 1000.0
+[[walls]]
+name = "floor"
+lower_left = [-2.0, -1.0]
+upper_right = [2.0, -0.5]
+material = "hard"
+[[grains]]
+center = [0.0, 0.0]
+radius = 0.5
+material = "soft"
+velocity = [0.0, -1.0]
+[[grains]]
+center = [1.2, 0.0]
+radius = 0.4
+material = "hard"
+rigid = true
+)";
+
+}  // namespace sg::scenes
