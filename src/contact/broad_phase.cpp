@@ -229,4 +229,33 @@ bool BroadPhase::needs_rebuild(const BroadPhaseInput& input) const {
   return false;
 }
 
+void BroadPhase::capture(BroadPhaseState& state) const {
+  state.build_count = build_count_;
+  state.built_nodes = built_nodes_;  // vector assignment reuses the destination's capacity
+  state.built_segment_start = built_segment_start_;
+  state.built_segment_end = built_segment_end_;
+  state.candidates = candidates_;
+}
+
+void BroadPhase::restore(const BroadPhaseState& state) {
+  SG_VERIFY(
+      state.build_count >= 0 && state.built_segment_start.size() == state.built_segment_end.size(),
+      "contact broad phase: inconsistent saved state ("
+          << state.built_segment_start.size() << " segment starts, "
+          << state.built_segment_end.size() << " ends)");
+  for (const ContactCandidate& c : state.candidates)
+    SG_VERIFY(c.node >= 0 && static_cast<std::size_t>(c.node) < state.built_nodes.size() &&
+                  c.segment >= 0 &&
+                  static_cast<std::size_t>(c.segment) < state.built_segment_start.size(),
+              "contact broad phase: saved candidate (node "
+                  << c.node << ", segment " << c.segment << ") is out of range ("
+                  << state.built_nodes.size() << " nodes, " << state.built_segment_start.size()
+                  << " segments)");
+  build_count_ = state.build_count;
+  built_nodes_ = state.built_nodes;
+  built_segment_start_ = state.built_segment_start;
+  built_segment_end_ = state.built_segment_end;
+  candidates_ = state.candidates;
+}
+
 }  // namespace sg

@@ -66,6 +66,17 @@ struct ContactCandidate {
   friend bool operator==(const ContactCandidate&, const ContactCandidate&) = default;
 };
 
+// What a broad phase remembers between steps (checkpoints, retried steps): the positions at
+// the last build, which decide when the next rebuild happens, and the list built from them.
+// The list is a function of those positions, but it is copied rather than rebuilt: a restore
+// is then a plain copy, as cheap as a capture, and does not depend on build() staying a pure
+// function of its input. The cell grid and scratch arrays are not state.
+struct BroadPhaseState {
+  int build_count = 0;
+  std::vector<Vec2> built_nodes, built_segment_start, built_segment_end;
+  std::vector<ContactCandidate> candidates;
+};
+
 class BroadPhase {
  public:
   explicit BroadPhase(const BroadPhaseParams& params);
@@ -81,6 +92,11 @@ class BroadPhase {
   std::span<const ContactCandidate> candidates() const { return candidates_; }
   const BroadPhaseParams& params() const { return params_; }
   int build_count() const { return build_count_; }
+
+  // Copies the state into `state` (reusing its buffers) / back from it. restore() checks that
+  // the candidates refer to the remembered nodes and segments.
+  void capture(BroadPhaseState& state) const;
+  void restore(const BroadPhaseState& state);
 
  private:
   BroadPhaseParams params_;

@@ -55,6 +55,16 @@ struct ContactHistoryEntry {
   ContactHistory history;
 };
 
+// Everything a ContactSystem carries from one step to the next: what a checkpoint saves and
+// a rejected step restores (solver/state_snapshot.h). Positions, segments and tributary
+// lengths are recomputed from the model at each evaluation and are not part of it.
+struct ContactSystemState {
+  std::vector<ContactHistoryEntry> histories;
+  std::vector<Vec2> previous_positions;
+  std::vector<ContactRecord> records;  // the last evaluation (written to contacts/*.vtu)
+  BroadPhaseState broad_phase;
+};
+
 struct ContactStepResult {
   double dissipated = 0.0;     // energy dissipated at contacts during this evaluation
   double stored_energy = 0.0;  // elastic energy held by the contact springs now
@@ -80,6 +90,20 @@ class ContactSystem {
   const std::vector<Vec2>& previous_positions() const { return previous_positions_; }
   void set_previous_positions(std::vector<Vec2> p) { previous_positions_ = std::move(p); }
   const BroadPhase& broad_phase() const { return broad_phase_; }
+  // Copies the evolving state into `state`, reusing its buffers (no allocation once they
+  // have grown), and back.
+  void capture(ContactSystemState& state) const {
+    state.histories = histories_;
+    state.previous_positions = previous_positions_;
+    state.records = records_;
+    broad_phase_.capture(state.broad_phase);
+  }
+  void restore(const ContactSystemState& state) {
+    broad_phase_.restore(state.broad_phase);
+    histories_ = state.histories;
+    previous_positions_ = state.previous_positions;
+    records_ = state.records;
+  }
   const ContactSettings& settings() const { return settings_; }
   // Largest penalty stiffness of any law (normal or tangential), for the stable step.
   double max_stiffness() const { return max_stiffness_; }

@@ -56,6 +56,9 @@ class ExplicitSolver {
   Model& model_;
   ContactSystem* contacts_;
   SolverState state_;
+  // Checkpoints and retried steps save and restore the pending increments below with the
+  // rest of the state (solver/state_snapshot.cpp): every member that is not scratch.
+  friend struct SolverSnapshotAccess;
   // Work and dissipation over the last step [t_n, t_n+1], booked at the next step so the
   // ledger always describes one instant.
   double pending_external_work_ = 0.0;

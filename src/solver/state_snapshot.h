@@ -1,0 +1,61 @@
+#pragma once
+// The whole evolving state of a run, in memory: what a checkpoint file holds
+// (io/checkpoint.h) and what an adaptive step restores when it rejects a step.
+//
+// "Evolving" means everything a later step reads that an earlier step wrote:
+//   field nodes   u, v, and ref_x (ExplicitSolver::wrap_periodic_bodies moves a deformable
+//                 body across the periodic seam by shifting its reference positions)
+//   rigid bodies  pose, velocities, and the forces received at the last evaluation
+//   solver        time, step count, energy ledger, and the work and dissipation of the last
+//                 step that the next step books (ExplicitSolver's pending increments)
+//   contacts      per-contact histories, the previous contour positions (slip increments),
+//                 the last evaluation's records (contact output), and the broad phase's
+//                 positions at its last build and candidate list (which decide the next
+//                 rebuild: a restored run must see exactly the candidates an uninterrupted
+//                 one would)
+// Everything else is either fixed at model build (reference geometry, masses, shape
+// functions) or recomputed from the above at each step (forces, contour positions, cell
+// grids, scratch), and is not saved: restoring the snapshot into a freshly built model of
+// the same scenario continues the run bitwise identically.
+//
+// capture_state() and restore_state() copy arrays and nothing else: no file I/O, and no
+// allocation once a snapshot reused for successive captures has grown to size.
+#include <vector>
+
+#include "contact/contact_system.h"
+#include "solver/explicit_solver.h"
+
+namespace sg {
+
+// Work and dissipation of the last step, booked in the ledger at the next one (see
+// ExplicitSolver::step): part of the state although private to the solver.
+struct SolverPendingIncrements {
+  double external_work = 0.0;
+  double damping_dissipation = 0.0;
+};
+
+struct StateSnapshot {
+  // Field nodes, one entry per node.
+  std::vector<double> ref_x, ux, uy, vx, vy;
+  // Rigid bodies, one entry per rigid body.
+  std::vector<double> rigid_x, rigid_y, rigid_theta;
+  std::vector<double> rigid_vx, rigid_vy, rigid_omega;
+  std::vector<double> rigid_fx, rigid_fy, rigid_torque;
+  SolverState solver;
+  SolverPendingIncrements pending;
+  bool has_contacts = false;
+  ContactSystemState contacts;
+};
+
+// Copies the state of `solver` (its model) and of `contacts` (may be null) into `snapshot`,
+// reusing the snapshot's buffers.
+void capture_state(const ExplicitSolver& solver, const ContactSystem* contacts,
+                   StateSnapshot& snapshot);
+StateSnapshot capture_state(const ExplicitSolver& solver, const ContactSystem* contacts);
+
+// Puts `snapshot` back into `solver`, its model and `contacts`. Throws sg::Error if the
+// snapshot does not fit (another number of nodes, rigid bodies or contour points, contacts
+// expected and not given or the reverse).
+void restore_state(const StateSnapshot& snapshot, ExplicitSolver& solver, ContactSystem* contacts);
+
+}  // namespace sg
