@@ -97,7 +97,9 @@ ContactTraction open_contact(double released_energy, ContactHistory& history) {
 
 }  // namespace
 
-ContactTraction evaluate_contact_law(const ContactLawParams& params, double normal_gap,
+namespace {
+
+ContactTraction evaluate_law_of_kind(const ContactLawParams& params, double normal_gap,
                                      double slip_increment, ContactHistory& history) {
   const double k_n = params.normal_stiffness;
   const double k_t = params.tangential_stiffness;
@@ -116,7 +118,7 @@ ContactTraction evaluate_contact_law(const ContactLawParams& params, double norm
     case ContactLawKind::coulomb: {
       if (normal_gap >= 0.0) {
         // No tension: the surfaces separate and the tangential spring releases its energy.
-        const double released = history.active ? 0.5 * k_t * trial_slip * trial_slip : 0.0;
+        const double released = history.active ? 0.5 * k_t * history.stored_slip * trial_slip : 0.0;
         return open_contact(released, history);
       }
       history.active = true;
@@ -135,8 +137,8 @@ ContactTraction evaluate_contact_law(const ContactLawParams& params, double norm
       const double normal = -k_n * normal_gap;  // p_n = -k_n g_n, tension allowed
       if (normal < -params.adhesion) {
         // Tension beyond sigma_c: the bond breaks (paper 001 §2.1, DESIGN.md §2).
-        const double released =
-            0.5 * k_n * normal_gap * normal_gap + 0.5 * k_t * trial_slip * trial_slip;
+        const double released = 0.5 * k_n * history.normal_gap * normal_gap +
+                                0.5 * k_t * history.stored_slip * trial_slip;
         ContactTraction out = open_contact(released, history);
         out.bond_broken = true;
         return out;
@@ -150,6 +152,16 @@ ContactTraction evaluate_contact_law(const ContactLawParams& params, double norm
     }
   }
   return ContactTraction{};
+}
+
+}  // namespace
+
+ContactTraction evaluate_contact_law(const ContactLawParams& params, double normal_gap,
+                                     double slip_increment, ContactHistory& history) {
+  // history.normal_gap is still the previous gap while the law runs (energy released).
+  const ContactTraction out = evaluate_law_of_kind(params, normal_gap, slip_increment, history);
+  history.normal_gap = normal_gap;
+  return out;
 }
 
 double stored_energy(const ContactLawParams& params, double normal_gap,

@@ -123,23 +123,31 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model) {
     const BodyId master = segment_body_[static_cast<std::size_t>(first.segment)];
     const Body& master_body = model.bodies[static_cast<std::size_t>(master)];
     const BodyId slave_body = node_body_[static_cast<std::size_t>(slave)];
-    // Nearest periodic image of the node relative to the master: recomputed from current
-    // positions (the broad-phase shift is from build time).
-    Vec2 node = positions_[static_cast<std::size_t>(slave)];
-    double shift = 0.0;
-    if (model.periodic_x) {
-      shift = nearest_image_shift(broad_phase_.params(), node,
-                                  segment_start_[static_cast<std::size_t>(first.segment)],
-                                  segment_end_[static_cast<std::size_t>(first.segment)]);
-      node.x() += shift;
-    }
+    // Nearest periodic image of the node relative to EACH candidate segment, recomputed from
+    // current positions (the broad-phase shift is from build time). One shift per group is
+    // not enough: a first body spans the whole period, so a node near the seam can have
+    // candidates at both ends of the strip (the closing segment near x_min and segment 0
+    // near x_max), each needing its own image; projecting with the first segment's shift
+    // put the node on the far end and reported a deep false penetration at the corner.
+    const Vec2 unshifted = positions_[static_cast<std::size_t>(slave)];
     const ContourView view = contour_view(master_body, positions_);
-    int local[64];
-    int local_count = 0;
-    for (std::size_t c = group.begin; c < group.end && local_count < 64; ++c)
-      local[local_count++] = candidates[c].segment - master_body.contour_begin;
-    const NodeProjection proj = project_on_contour(
-        node, view, std::span<const int>(local, static_cast<std::size_t>(local_count)));
+    NodeProjection proj;
+    double shift = 0.0;
+    for (std::size_t c = group.begin; c < group.end; ++c) {
+      const auto segment = static_cast<std::size_t>(candidates[c].segment);
+      const double candidate_shift =
+          model.periodic_x ? nearest_image_shift(broad_phase_.params(), unshifted,
+                                                 segment_start_[segment], segment_end_[segment])
+                           : 0.0;
+      const NodeProjection p = project_on_contour_segment(
+          unshifted + Vec2(candidate_shift, 0.0), view,
+          candidates[c].segment - master_body.contour_begin);
+      if (is_closer(p, proj)) {
+        proj = p;
+        shift = candidate_shift;
+      }
+    }
+    const Vec2 node = unshifted + Vec2(shift, 0.0);
     ContactRecord& r = results[static_cast<std::size_t>(g)];
     ContactHistory h = history_of(slave, master);
     if (proj.segment < 0 || (proj.gap >= settings_.cutoff && !h.active)) {

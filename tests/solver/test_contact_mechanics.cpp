@@ -3,6 +3,7 @@
 // action-reaction.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
@@ -178,6 +179,50 @@ TEST(Periodicity, ContactAcrossTheSeamGivesTheSameForcesAsAwayFromIt) {
   // Action and reaction.
   EXPECT_NEAR(away[0] + away[3], 0.0, 1e-12 * std::abs(away[1]));
   EXPECT_NEAR(away[1] + away[4], 0.0, 1e-12 * std::abs(away[1]));
+}
+
+// A first body (rigid periodic strip) that has drifted so that its closing segment (last
+// point -> first point shifted by one period) lies at the seam: a block resting there must
+// feel what it feels in the middle of the strip. A node above the closing segment has
+// candidates at both ends of the strip (the closing segment near x_min, segment 0 near
+// x_max); each needs its own periodic image. With one image per (node, body) the node was
+// projected onto the far end's corner and reported a false penetration of ~0.07 (a grain of
+// the shear cell was shot out of the layer and the energy balance lost 3% of the work).
+TEST(Periodicity, BlockOnAStripsClosingSegmentFeelsWhatItFeelsElsewhere) {
+  auto forces = [](double block_left) {
+    Model model;
+    model.periodic_x = true;
+    model.x_min = 0.0;
+    model.x_max = 10.0;
+    const MaterialId m = model.add_material(scenes::rigid_material());
+    // Flat surface y = 0 running right to left (material below), points at k h - 0.53.
+    const double h = 0.1, drift = -0.53;
+    Polygon surface;
+    for (int k = 99; k >= 0; --k)
+      surface.emplace_back(k * h + drift, 0.0);
+    const BodyId strip = model.add_rigid_strip("strip", surface, m, -10.0, 1.0, 1.0);
+    const BodyId block = model.add_rigid_body(
+        "block", make_rectangle(Vec2(block_left, -0.001), Vec2(block_left + 1.0, 0.5), h), m);
+    scenes::fix_rigid(model, strip);
+    scenes::fix_rigid(model, block);
+    ContactSettings settings;
+    settings.cutoff = 0.05;
+    ContactSystem contacts(model, scenes::single_law(model, coulomb(0.3)), settings);
+    ExplicitSolver solver(model, &contacts);
+    solver.step(1e-4);
+    const auto r =
+        static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(block)].rigid_index);
+    double deepest = 0.0;
+    for (const ContactRecord& c : contacts.records())
+      deepest = std::min(deepest, c.gap);
+    return std::vector<double>{model.rigid.fx[r], model.rigid.fy[r], deepest};
+  };
+  // The two placements differ by 60 h: the same block-to-strip alignment.
+  const std::vector<double> seam = forces(-1.005), away = forces(4.995);
+  ASSERT_GT(away[1], 0.0);
+  EXPECT_NEAR(seam[0], away[0], 1e-9 * away[1]);
+  EXPECT_NEAR(seam[1], away[1], 1e-9 * away[1]);
+  EXPECT_NEAR(seam[2], -0.001, 1e-9);  // no contact deeper than the real penetration
 }
 
 TEST(BadInput, MaterialPairWithoutLawIsRefused) {
