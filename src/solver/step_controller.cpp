@@ -1,0 +1,130 @@
+#include "solver/step_controller.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace sg {
+
+void validate(const StepControlParams& p) {
+  SG_VERIFY(p.safety > 0.0 && p.safety <= 1.0,
+            "step control: safety must be in (0, 1], got " << p.safety);
+  SG_VERIFY(p.fixed_step >= 0.0 && std::isfinite(p.fixed_step),
+            "step control: fixed_step must be >= 0, got " << p.fixed_step);
+  SG_VERIFY(p.initial_step >= 0.0 && std::isfinite(p.initial_step),
+            "step control: initial_step must be >= 0, got " << p.initial_step);
+  SG_VERIFY(p.reestimate_interval >= 0,
+            "step control: reestimate_interval must be >= 0, got " << p.reestimate_interval);
+  SG_VERIFY(p.tolerance > 0.0, "step control: tolerance must be > 0, got " << p.tolerance);
+  SG_VERIFY(p.max_halvings >= 1, "step control: max_halvings must be >= 1, got " << p.max_halvings);
+  SG_VERIFY(p.recovery_steps >= 1,
+            "step control: recovery_steps must be >= 1, got " << p.recovery_steps);
+  SG_VERIFY(p.growth > 1.0, "step control: growth must be > 1, got " << p.growth);
+}
+
+StepController::StepController(ExplicitSolver& solver, ContactSystem* contacts,
+                               const StepControlParams& params)
+    : solver_(solver), contacts_(contacts), params_(params) {
+  validate(params_);
+  contact_stiffness_ = contacts_ ? contacts_->max_stiffness() : 0.0;
+  if (params_.fixed_step > 0.0) {
+    state_.dt = state_.stable_dt = params_.fixed_step;
+    return;
+  }
+  estimate();
+  state_.dt = params_.initial_step > 0.0 ? params_.initial_step : state_.stable_dt;
+}
+
+void StepController::estimate() {
+  const bool reduced = state_.dt > 0.0 && state_.dt < state_.stable_dt;
+  estimate_ = estimate_stable_time_step(solver_.model(), params_.safety, contact_stiffness_);
+  state_.stable_dt = estimate_.dt;
+  state_.since_estimate = 0;
+  ++state_.statistics.estimates;
+  // A step reduced after a rejection keeps growing back on its own schedule; otherwise the
+  // step follows the estimate, down or up.
+  state_.dt = reduced ? std::min(state_.dt, state_.stable_dt) : state_.stable_dt;
+}
+
+void StepController::set_state(const StepControllerState& state) {
+  state_ = state;
+  seal();
+}
+
+double StepController::advance() {
+  StepStatistics& stats = state_.statistics;
+  if (params_.fixed_step > 0.0) {
+    solver_.step(params_.fixed_step);
+    ++stats.accepted;
+    stats.dt_min = stats.dt_max = params_.fixed_step;
+    return params_.fixed_step;
+  }
+  if (params_.reestimate_interval > 0 && state_.since_estimate >= params_.reestimate_interval)
+    estimate();
+
+  for (int rejections = 0;; ++rejections) {
+    // Hold the state before this step (the older held state is overwritten).
+    newest_ = 1 - newest_;
+    capture_state(solver_, contacts_, held_state_[newest_]);
+    held_dt_[newest_] = state_.dt;
+    held_ = std::min(held_ + 1, 2);
+
+    const double dt = state_.dt;
+    const double residual_before = solver_.state().energy.residual();
+    std::string why;
+    bool failed = false;
+    try {
+      solver_.step(dt);
+    } catch (const Error& e) {
+      why = e.what();
+      failed = true;
+    }
+    if (!failed) {
+      // The residual increment of this call is the error of the previous interval.
+      const EnergyLedger& e = solver_.state().energy;
+      state_.energy_scale =
+          std::max(state_.energy_scale,
+                   std::abs(e.kinetic) + e.elastic + e.contact_elastic + std::abs(e.external_work));
+      const double increment = e.residual() - residual_before;
+      if (std::abs(increment) <= params_.tolerance * state_.energy_scale) {
+        ++stats.accepted;
+        stats.dt_min = std::min(stats.dt_min, dt);
+        stats.dt_max = std::max(stats.dt_max, dt);
+        ++state_.since_estimate;
+        if (state_.dt < state_.stable_dt && ++state_.since_reduction >= params_.recovery_steps) {
+          state_.dt = std::min(state_.stable_dt, state_.dt * params_.growth);
+          state_.since_reduction = 0;
+        }
+        return dt;
+      }
+      std::ostringstream s;
+      s << "energy residual changed by " << increment << " in one step (tolerance "
+        << params_.tolerance << " x energy scale " << state_.energy_scale << ")";
+      why = s.str();
+    }
+
+    // Reject: roll back to the oldest held state (before the interval the check judged).
+    const int target = held_ == 2 ? 1 - newest_ : newest_;
+    std::ostringstream note;
+    note << "t = " << solver_.state().time << ", step " << solver_.state().step
+         << ", dt = " << held_dt_[target] << ": " << why;
+    if (rejections >= params_.max_halvings || (failed && held_ < 2))
+      SG_THROW("step rejected " << rejections + 1 << " times; last: " << note.str()
+                                << (failed && held_ < 2 ? " (no earlier state held to retry from)"
+                                                        : ""));
+    restore_state(held_state_[target], solver_, contacts_);
+    // Half the rejected step, and never more than the stable step of the restored state (an
+    // estimate older than the event, or a user-given first step, may have been too large).
+    const double rejected_dt = held_dt_[target];
+    estimate();
+    state_.dt = std::min(0.5 * rejected_dt, state_.stable_dt);
+    state_.since_reduction = 0;
+    held_ = 0;
+    ++stats.rejected;
+    stats.last_rejection = note.str();
+  }
+}
+
+}  // namespace sg

@@ -1,0 +1,106 @@
+#pragma once
+// Adaptive explicit step (issue #4 "Step control"; DESIGN.md §2 "Time integration").
+//
+// The step is bounded by stability, not by accuracy: for the papers' parameters the critical
+// step (damping-aware, stable_time_step.h) is far below what the accuracy of the slow
+// granular motion would allow. So the controller
+//   1. takes safety x the critical step, re-estimated every `reestimate_interval` accepted
+//      steps (finite strain stiffens the grains; the estimate is for the current state);
+//   2. checks every step with an error estimate that costs no extra force evaluation: the
+//      energy ledger's residual increment. For the time-centred ledger (explicit_solver.h)
+//      the residual of a stable step changes by round-off for a linear system and by a small
+//      oscillating amount otherwise (shear cell: median 1e-5, 99th percentile 4e-3 of the
+//      system's energy per step); a step that creates or destroys more than `tolerance` x
+//      the largest energy held so far is an instability or an unresolved event;
+//   3. rejects such a step, or one that fails outright (a non-finite value, an inverted
+//      Gauss point), restores the state from before it, re-estimates the critical step
+//      there and retries at half the step (at most the new stable step); after
+//      `recovery_steps` accepted steps at a reduced step it grows back by `growth` up to the
+//      stable step.
+// The residual after a step describes the previous interval (the ledger is one step
+// behind), so the controller keeps the states before the last two steps, and a rejection
+// rolls both back and retries the earlier one at half its size. Accepted steps cost one force
+// evaluation; a rejection costs the two rolled-back ones. seal() forgets the held states
+// (the run calls it at checkpoints, so that no rollback ever crosses one and a resumed run
+// repeats the uninterrupted one bitwise); a step that fails with nothing held is an error.
+// Outputs written between a step and its rollback (at most two steps) show the rejected
+// trajectory; run.log lists every rejection with its time.
+//
+// Everything is deterministic (no timing, no thread-count dependence): a run with rejections
+// repeats bitwise, and `state()` / `set_state()` carry the controller through a checkpoint.
+#include <limits>
+#include <string>
+
+#include "contact/contact_system.h"
+#include "solver/explicit_solver.h"
+#include "solver/stable_time_step.h"
+#include "solver/state_snapshot.h"
+
+namespace sg {
+
+struct StepControlParams {
+  double safety = 0.8;              // fraction of the critical step, in (0, 1]
+  double fixed_step = 0.0;          // > 0: this step always, no estimate, no check
+  double initial_step = 0.0;        // > 0: start with this step instead of the estimate (tests)
+  long reestimate_interval = 2000;  // accepted steps between critical-step estimates (0: never)
+  double tolerance = 0.01;          // allowed |residual increment| per step / largest energy so far
+  int max_halvings = 8;             // consecutive rejections of one step before giving up
+  long recovery_steps = 50;         // accepted steps at a reduced step before it grows
+  double growth = 1.25;             // growth factor back towards the stable step
+};
+
+// Throws sg::Error naming the key if a value is out of range.
+void validate(const StepControlParams& params);
+
+// What the run log reports.
+struct StepStatistics {
+  long accepted = 0, rejected = 0, estimates = 0;
+  double dt_min = std::numeric_limits<double>::infinity(), dt_max = 0.0;
+  std::string last_rejection;  // why the last step was rejected (empty: none)
+};
+
+// The controller's own evolving state (checkpointed with the run).
+struct StepControllerState {
+  double dt = 0.0;            // the step the next advance() tries
+  double stable_dt = 0.0;     // safety x critical step at the last estimate
+  double energy_scale = 0.0;  // largest K + E_elastic + E_contact + |W_ext| seen
+  double last_residual = 0.0;
+  long since_estimate = 0;   // accepted steps since the last estimate
+  long since_reduction = 0;  // accepted steps since dt was last reduced or grown
+  StepStatistics statistics;
+};
+
+class StepController {
+ public:
+  // Estimates the first step (unless fixed). `contacts` may be null.
+  StepController(ExplicitSolver& solver, ContactSystem* contacts, const StepControlParams& params);
+
+  // Takes one accepted step and returns its size. Throws sg::Error (with the solver's
+  // diagnosis: body, node, step) when a step still fails after max_halvings retries.
+  double advance();
+
+  double next_step() const { return state_.dt; }
+  const StableStep& last_estimate() const { return estimate_; }
+  const StepStatistics& statistics() const { return state_.statistics; }
+  const StepControllerState& state() const { return state_; }
+  // Continues from a checkpoint: the solver must hold the checkpointed state already.
+  void set_state(const StepControllerState& state);
+  // Forgets the held states: no later rejection rolls back beyond this point.
+  void seal() { held_ = 0; }
+
+ private:
+  ExplicitSolver& solver_;
+  ContactSystem* contacts_;
+  StepControlParams params_;
+  double contact_stiffness_ = 0.0;
+  StableStep estimate_;
+  StepControllerState state_;
+  // States before the last two steps (ring of two; held_ of them valid) and the steps taken
+  // from them; newest_ indexes the state before the last step.
+  StateSnapshot held_state_[2];
+  double held_dt_[2] = {0.0, 0.0};
+  int held_ = 0, newest_ = 1;
+  void estimate();
+};
+
+}  // namespace sg
