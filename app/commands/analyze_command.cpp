@@ -4,6 +4,7 @@
 
 #include "command_registry.h"
 #include "render/analyze_run.h"
+#include "render/plot_runner.h"
 
 namespace sg::app {
 namespace {
@@ -17,7 +18,33 @@ struct AnalyzeArguments {
          diameter = RunParameters::kUnknown;
   int bins = 0;
   bool no_agglomerates = false;
+  double threshold = 0.8;
+  bool plots = false, no_plots = false;
 };
+
+// Runs scripts/plot_run.py (render/plot_runner.h). Asked for (--plots) and impossible is
+// an error; by default, a missing matplotlib or script is only reported.
+int draw_plots(const std::string& run_dir, bool asked) {
+  if (!python_has_matplotlib()) {
+    std::cout << "plots: skipped: " << kPlotPython
+              << " with matplotlib and numpy not found (Debian: apt-get install "
+                 "python3-matplotlib python3-numpy)\n";
+    return asked ? 1 : 0;
+  }
+  std::vector<std::filesystem::path> tried;
+  const auto script = find_plot_script(current_executable(), &tried);
+  if (!script) {
+    std::cout << "plots: skipped: plot_run.py not found (tried";
+    for (const auto& t : tried)
+      std::cout << " " << t.string();
+    std::cout << ")\n";
+    return asked ? 1 : 0;
+  }
+  const int status = run_plot_script(*script, run_dir);
+  if (status != 0)
+    std::cout << "plots: " << script->string() << " failed (exit status " << status << ")\n";
+  return status == 0 ? 0 : 1;
+}
 
 const Registration registration(
     {"analyze",
@@ -44,6 +71,15 @@ const Registration registration(
            ->expected(2);
        cmd->add_option("--bins", a->bins, "profile bins (default: two per mean diameter)");
        cmd->add_flag("--no-agglomerates", a->no_agglomerates, "skip the coherence analysis");
+       cmd->add_option("--coherence-threshold", a->threshold,
+                       "|C| above which a grid node belongs to a structure (paper 002: 0.8)")
+           ->check(CLI::Range(0.0, 1.0).description("in (0, 1)"))
+           ->capture_default_str();
+       CLI::Option* plots = cmd->add_flag(
+           "--plots", a->plots,
+           "draw mu(t), profiles, energy shares, agglomerate PDFs into RUN_DIR/analysis/*.png "
+           "(default: on when /usr/bin/python3 imports matplotlib)");
+       cmd->add_flag("--no-plots", a->no_plots, "no plots")->excludes(plots);
        return std::function<int()>([a, &options] {
          apply_threads(options);
          AnalyzeOptions o;
@@ -58,6 +94,7 @@ const Registration registration(
          o.given.mean_diameter = a->diameter;
          o.profile_bins = a->bins;
          o.agglomerates = !a->no_agglomerates;
+         o.coherence_threshold = a->threshold;
          const AnalyzeResult r = analyze_run(a->run_dir, o);
          std::cout << format_summary_table(r.summary) << "\nparameters:\n";
          for (const ParameterSource& p : r.parameter_sources)
@@ -70,9 +107,10 @@ const Registration registration(
              std::cout << "  - " << n << "\n";
          }
          std::cout << "\nwritten: " << r.summary_path.string();
-         if (!r.profile_path.empty()) std::cout << ", " << r.profile_path.string();
+         for (const auto* path : {&r.profile_path, &r.agglomerates_path, &r.agglomerate_pdfs_path})
+           if (!path->empty()) std::cout << ", " << path->filename().string();
          std::cout << "\n";
-         return 0;
+         return a->no_plots ? 0 : draw_plots(a->run_dir, a->plots);
        });
      },
      30});

@@ -1,8 +1,10 @@
 // softgrain render RUN_DIR: PNG snapshots of a field (and an MP4 when ffmpeg is present).
 #include <iostream>
 
+#include "analysis/series.h"
 #include "command_registry.h"
 #include "core/error.h"
+#include "render/analyze_run.h"
 #include "render/run_folder.h"
 #include "render/snapshot_renderer.h"
 
@@ -39,7 +41,8 @@ const Registration registration(
        cmd->add_option("--field", args->field,
                        "von_mises | velocity | velocity_x | velocity_y | body | "
                        "green_lagrange_norm | pressure | sigma_xx | sigma_yy | sigma_xy | "
-                       "displacement")
+                       "displacement | coherence (paper 002 eq. 5 at each grain's centre, "
+                       "from grains/NNNNNN.csv; range [-1, 1])")
            ->capture_default_str();
        cmd->add_option("--size", args->size, "picture size WxH in pixels")->capture_default_str();
        cmd->add_option("--range", args->range, "colour range MIN MAX (default: over all frames)")
@@ -64,10 +67,21 @@ const Registration registration(
          if (run.has_scenario) {
            options.periodic = run.periodic;
            options.title = run.name;
+           if (options.field == "coherence") {
+             // Only grains carry a coherence: drop the driven bodies, walls, first bodies.
+             std::vector<std::string> driven;
+             if (std::filesystem::exists(dir / "series.csv"))
+               driven = read_series((dir / "series.csv").string()).body_names;
+             options.non_grain_rows = non_grain_rows(run, driven);
+           }
          } else {
            options.title = std::filesystem::absolute(dir).lexically_normal().filename().string();
            std::cerr << "note: " << run.note
-                     << "; periodic wrapping unknown, drawing positions as written\n";
+                     << "; periodic wrapping unknown, drawing positions as written"
+                     << (options.field == "coherence"
+                             ? "; walls cannot be told from grains (all treated as grains)"
+                             : "")
+                     << "\n";
          }
          const RenderResult r = render_run(dir, options);
          std::cout << "render '" << options.field << "': " << r.images.size() << " picture"
@@ -75,9 +89,10 @@ const Registration registration(
                    << "\n";
          if (r.has_range)
            std::cout << "  colour range [" << r.range_min << ", " << r.range_max << "]"
-                     << (options.range          ? " (given)"
-                         : options.robust_range ? " (1st-99th percentile over all frames)"
-                                                : " (min-max over all frames)")
+                     << (options.range                  ? " (given)"
+                         : options.field == "coherence" ? " (fixed: C in [-1, 1])"
+                         : options.robust_range         ? " (1st-99th percentile over all frames)"
+                                                        : " (min-max over all frames)")
                      << "\n";
          if (!r.movie.empty()) std::cout << "  movie: " << r.movie.string() << "\n";
          if (!r.note.empty()) std::cout << "  note: " << r.note << "\n";

@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "io/atomic_file.h"
+#include "analysis/agglomerate_statistics.h"
 #include "analysis/driven_body.h"
 #include "analysis/energy_budget.h"
 #include "analysis/friction.h"
@@ -14,6 +15,8 @@
 #include "analysis/series.h"
 #include "analysis/steady_state.h"
 #include "core/error.h"
+#include "io/atomic_file.h"
+#include "render/coherence_frames.h"
 #include "render/run_folder.h"
 #include "render/vtu_reader.h"
 
@@ -90,6 +93,121 @@ Snapshots read_snapshots(const fs::path& run_dir, const std::vector<std::string>
   return out;
 }
 
+// A number for a CSV cell: full precision; empty for an unknown value.
+std::string cell(double v) {
+  if (!std::isfinite(v)) return "";
+  std::ostringstream s;
+  s << std::setprecision(12) << v;
+  return s.str();
+}
+
+std::string structures_csv(const AgglomerateResult& a, std::span<const GrainSnapshot> frames) {
+  std::ostringstream out;
+  out << "id,sign,first_frame,last_frame,first_time,last_time,frames,lifetime,mean_area,"
+         "diameter,grain_samples,omega,omega_tilde\n";
+  for (std::size_t k = 0; k < a.structures.size(); ++k) {
+    const Structure& st = a.structures[k];
+    out << k << ',' << st.sign << ',' << st.first_frame << ',' << st.last_frame << ','
+        << cell(frames[static_cast<std::size_t>(st.first_frame)].time) << ','
+        << cell(frames[static_cast<std::size_t>(st.last_frame)].time) << ',' << st.frame_count
+        << ',' << cell(st.lifetime) << ',' << cell(st.mean_area) << ',' << cell(st.diameter) << ','
+        << st.grain_samples << ',' << cell(st.omega) << ',' << cell(st.omega_normalized) << '\n';
+  }
+  return out.str();
+}
+
+void append_pdf(std::ostringstream& out, const std::string& quantity, const WeightedPdf& pdf) {
+  const double width =
+      pdf.centre.empty() ? 0.0 : (pdf.hi - pdf.lo) / static_cast<double>(pdf.centre.size());
+  for (std::size_t b = 0; b < pdf.centre.size(); ++b)
+    out << quantity << ',' << cell(pdf.centre[b] - 0.5 * width) << ','
+        << cell(pdf.centre[b] + 0.5 * width) << ',' << cell(pdf.density[b]) << '\n';
+}
+
+// Grain-weighted PDF of the lifetimes: one bin per whole number of frames (a lifetime is
+// frames x period), centred on it.
+WeightedPdf lifetime_pdf(const AgglomerateResult& a) {
+  int most = 1;
+  std::vector<double> life, weight;
+  for (const Structure& st : a.structures) {
+    most = std::max(most, st.frame_count);
+    life.push_back(st.lifetime);
+    weight.push_back(static_cast<double>(st.grain_samples));
+  }
+  const double T = a.frame_period;
+  return weighted_pdf(life, weight, most, 0.5 * T, (most + 0.5) * T);
+}
+
+// Largest |C| over the defined nodes of every frame (0 if none): tells a reader how far
+// from the threshold a run without structures is.
+double largest_coherence(const AgglomerateResult& a) {
+  double largest = 0.0;
+  for (const CoherenceField& c : a.coherence)
+    for (std::size_t n = 0; n < c.value.size(); ++n)
+      if (c.defined[n]) largest = std::max(largest, std::abs(c.value[n]));
+  return largest;
+}
+
+// Paper 002 §2.2-3.4 on the window's snapshots: coherence per snapshot, |C| > 0.8,
+// space-time labels (x periodic), per-structure statistics, PDFs. Anything that cannot
+// be computed leaves summary.agglomerates absent (null in the JSON) with a note.
+void analyze_agglomerates(AnalyzeResult& r, std::span<const GrainSnapshot> frames,
+                          const RunInfo& run, const AnalyzeOptions& options,
+                          const fs::path& run_dir) {
+  const RunParameters& p = r.parameters;
+  if (!(p.mean_diameter > 0.0)) {
+    r.notes.push_back("agglomerates null: mean grain diameter unknown (pass --diameter)");
+    return;
+  }
+  // The period: the scenario's span, or [0, L) for a length given as an option.
+  std::optional<std::pair<double, double>> period = run.periodic;
+  if (std::isfinite(options.given.length)) {
+    const double x0 = period ? period->first : 0.0;
+    period = std::make_pair(x0, x0 + options.given.length);
+  }
+  try {
+    CoherenceSetup setup = choose_coherence_setup(frames, p.mean_diameter, period, options.layer);
+    setup.params.threshold = options.coherence_threshold;
+    r.agglomerate_grid = setup.note;
+    r.agglomerate_threshold = setup.params.threshold;
+    if (frames.size() >= 3) {
+      // Lifetimes count frames x the mean period: say so if the spacing is uneven.
+      const double mean_dt =
+          (frames.back().time - frames.front().time) / static_cast<double>(frames.size() - 1);
+      double worst = 0.0;
+      for (std::size_t k = 1; k < frames.size(); ++k)
+        worst = std::max(worst, std::abs(frames[k].time - frames[k - 1].time - mean_dt));
+      if (worst > 0.01 * mean_dt)
+        r.notes.push_back("agglomerates: snapshot spacing uneven (up to " + number(worst) +
+                          " off the mean " + number(mean_dt) + "); lifetimes use the mean spacing");
+    }
+    AgglomerateResult a = detect_agglomerates(frames, setup.grid, setup.params, p.velocity, p.gap);
+    r.summary.agglomerates = compute_agglomerate_statistics(a, p.mean_diameter);
+    if (!std::isfinite(p.velocity) || !std::isfinite(p.gap))
+      r.notes.push_back("omega~ null: needs V and D (pass --velocity, --gap)");
+    if (a.structures.empty())
+      r.notes.push_back("agglomerates: no region with |C| > " + number(setup.params.threshold) +
+                        " in the window (largest |C| " + number(largest_coherence(a)) +
+                        "; modes and means null)");
+    if (frames.size() == 1)
+      r.notes.push_back("agglomerates: one snapshot in the window: lifetimes are one frame");
+    std::ostringstream pdfs;
+    pdfs << "quantity,bin_lo,bin_hi,density\n";
+    append_pdf(pdfs, "omega_tilde", r.summary.agglomerates->omega_pdf);
+    append_pdf(pdfs, "diameter", r.summary.agglomerates->diameter_pdf);
+    append_pdf(pdfs, "lifetime", lifetime_pdf(a));
+    r.agglomerates_path = run_dir / "analysis" / "agglomerates.csv";
+    r.agglomerate_pdfs_path = run_dir / "analysis" / "agglomerate_pdfs.csv";
+    write_file_atomically(r.agglomerates_path.string(), structures_csv(a, frames));
+    write_file_atomically(r.agglomerate_pdfs_path.string(), pdfs.str());
+    r.agglomerates = std::move(a);
+  } catch (const Error& e) {
+    r.summary.agglomerates.reset();
+    r.agglomerates.reset();
+    r.notes.push_back(std::string("agglomerates not computed: ") + e.what());
+  }
+}
+
 std::string json_document(const AnalyzeResult& r, const fs::path& run_dir) {
   nlohmann::ordered_json doc = nlohmann::ordered_json::parse(summary_json(r.summary));
   doc["run"] = fs::absolute(run_dir).lexically_normal().string();
@@ -114,11 +232,48 @@ std::string json_document(const AnalyzeResult& r, const fs::path& run_dir) {
     prof["samples_outside"] = r.profile->outside;
     doc["profile"] = std::move(prof);
   }
+  if (r.agglomerates) {
+    const AgglomerateResult& a = *r.agglomerates;
+    nlohmann::ordered_json ag;
+    ag["structures_file"] = "agglomerates.csv";
+    ag["pdfs_file"] = "agglomerate_pdfs.csv";
+    ag["grid"] = r.agglomerate_grid;
+    ag["grid_spacing"] = a.grid.hx;
+    ag["mls_support_radius"] = 2.0 * r.parameters.mean_diameter;
+    ag["coherence_radius"] = 2.5 * r.parameters.mean_diameter;
+    ag["threshold"] = r.agglomerate_threshold;
+    ag["frames"] = a.labels.nt;
+    ag["frame_period"] = a.frame_period;
+    ag["grain_samples"] = a.grain_samples;
+    ag["grain_samples_in_structures"] = a.grain_samples_in_structures;
+    ag["largest_abs_coherence"] = largest_coherence(a);
+    if (r.summary.agglomerates) {
+      ag["omega_tilde_pdf_outside"] = r.summary.agglomerates->omega_pdf.outside;
+    }
+    doc["agglomerates"] = std::move(ag);
+  }
   doc["notes"] = r.notes;
   return doc.dump(2) + "\n";
 }
 
 }  // namespace
+
+std::vector<std::string> non_grain_rows(const RunInfo& run,
+                                        const std::vector<std::string>& driven_bodies) {
+  std::vector<std::string> rows;
+  if (!run.has_scenario) return rows;
+  std::vector<std::string> not_grains(driven_bodies);
+  not_grains.insert(not_grains.end(), run.walls.begin(), run.walls.end());
+  if (run.shear_cell) {
+    not_grains.push_back("top");
+    not_grains.push_back("bottom");
+  }
+  // grains/*.csv number bodies in build order; the rows of the non-grains by index.
+  for (std::size_t i = 0; i < run.body_names.size(); ++i)
+    if (std::find(not_grains.begin(), not_grains.end(), run.body_names[i]) != not_grains.end())
+      rows.push_back(std::to_string(i));
+  return rows;
+}
 
 AnalyzeResult analyze_run(const fs::path& run_dir, const AnalyzeOptions& options) {
   AnalyzeResult r;
@@ -135,19 +290,9 @@ AnalyzeResult analyze_run(const fs::path& run_dir, const AnalyzeOptions& options
   // --- Run parameters: options, then the scenario, then measured.
   const RunInfo run = read_run_info(run_dir);
   const std::string scenario_source = "scenario " + run.source.filename().string();
-  std::vector<std::string> exclude;  // grain-snapshot rows that are not grains
+  const std::vector<std::string> exclude = non_grain_rows(run, series.body_names);
   if (run.has_scenario) {
     notes.insert(notes.end(), run.notes.begin(), run.notes.end());
-    std::vector<std::string> not_grains(series.body_names);  // driven bodies
-    not_grains.insert(not_grains.end(), run.walls.begin(), run.walls.end());
-    if (run.shear_cell) {
-      not_grains.push_back("top");
-      not_grains.push_back("bottom");
-    }
-    // grains/*.csv number bodies in build order; exclude the indices of the non-grains.
-    for (std::size_t i = 0; i < run.body_names.size(); ++i)
-      if (std::find(not_grains.begin(), not_grains.end(), run.body_names[i]) != not_grains.end())
-        exclude.push_back(std::to_string(i));
   } else {
     notes.push_back(run.note +
                     ": run parameters only from options; walls cannot be told from "
@@ -166,14 +311,9 @@ AnalyzeResult analyze_run(const fs::path& run_dir, const AnalyzeOptions& options
       pick(r, "damping_alpha", "time", g.damping_alpha, sv.damping_alpha, scenario_source);
 
   Snapshots snaps = read_snapshots(run_dir, exclude, notes);
-  double measured_diameter = kNan;
-  if (!snaps.all.empty() && snaps.all.front().size() > 0) {
-    // Mean equivalent diameter 2 sqrt(A/pi) of the grains in the first snapshot.
-    double sum = 0.0;
-    for (double a : snaps.all.front().area)
-      sum += 2.0 * std::sqrt(a / M_PI);
-    measured_diameter = sum / static_cast<double>(snaps.all.front().size());
-  }
+  // Mean equivalent diameter 2 sqrt(A/pi) of the grains in the first snapshot.
+  const double measured_diameter =
+      snaps.all.empty() ? kNan : mean_equivalent_diameter(snaps.all.front());
   p.mean_diameter = pick(r, "mean_diameter", "length", g.mean_diameter, measured_diameter,
                          "grains/*.csv (mean 2 sqrt(area/pi), first snapshot)");
 
@@ -306,15 +446,11 @@ AnalyzeResult analyze_run(const fs::path& run_dir, const AnalyzeOptions& options
         notes.push_back(std::string("solid fraction not computed: ") + e.what());
       }
     }
-    // Agglomerates (paper 002): not wired yet (the name clash between analysis/velocity_grid
-    // and meshfree/mls that blocked it is resolved). Next: call detect_agglomerates +
-    // compute_agglomerate_statistics here (periodic grid of one mean diameter over [y0, y1],
-    // MLS support 2 d, coherence radius 2.5 d).
-    (void)options.agglomerates;
-    notes.push_back(
-        "agglomerates null: not wired into analyze yet (see src/render/analyze_run.cpp)");
+    if (options.agglomerates)
+      analyze_agglomerates(r, window_snaps, run, options, run_dir);
+    else
+      notes.push_back("agglomerates not computed (--no-agglomerates)");
   }
-
   r.summary_path = run_dir / "analysis" / "summary.json";
   write_file_atomically(r.summary_path.string(), json_document(r, run_dir));
   return r;

@@ -11,8 +11,17 @@
 //   options           -> override any of these
 //
 // Writes RUN_DIR/analysis/summary.json (analysis/summary.h layout, plus "parameters": each
-// run parameter with its value and where it came from, and "notes": what could not be
-// computed and why) and RUN_DIR/analysis/profiles.csv, both atomically.
+// run parameter with its value and where it came from, "agglomerates": how they were
+// detected, and "notes": what could not be computed and why), RUN_DIR/analysis/profiles.csv,
+// agglomerates.csv (one row per structure) and agglomerate_pdfs.csv, all atomically.
+//
+// agglomerates.csv columns: id (the space-time label), sign (+1 counter-clockwise, -1
+// clockwise = with the shear), first_frame, last_frame (indices into the window's
+// snapshots), first_time, last_time, frames, lifetime, mean_area, diameter, grain_samples
+// (its (grain, snapshot) samples: its weight in "equivalent grains"), omega (eq. 6),
+// omega_tilde (omega / (-V/D), eq. 7; empty if unknown).
+// agglomerate_pdfs.csv columns: quantity (omega_tilde, diameter, lifetime), bin_lo,
+// bin_hi, density (grain-weighted, integrates to 1 over the bins of a quantity).
 //
 // Lives in render/ only because it needs the scenario layer (for run.log's scenario) and
 // render is the first stage above io; it belongs in analysis/ once that stage links io.
@@ -22,6 +31,7 @@
 #include <utility>
 #include <vector>
 
+#include "analysis/agglomerates.h"
 #include "analysis/profiles.h"
 #include "analysis/run_parameters.h"
 #include "analysis/summary.h"
@@ -34,6 +44,7 @@ struct AnalyzeOptions {
   std::optional<std::pair<double, double>> layer;   // [y_min, y_max] of the layer
   int profile_bins = 0;                             // 0: two per mean grain diameter
   bool agglomerates = true;
+  double coherence_threshold = 0.8;  // |C| > threshold marks a structure (paper 002: 0.8)
 };
 
 struct ParameterSource {
@@ -49,8 +60,20 @@ struct AnalyzeResult {
   std::vector<ParameterSource> parameter_sources;
   std::vector<std::string> notes;  // what was not computed and why; choices made
   std::optional<VelocityProfile> profile;
+  std::optional<AgglomerateResult> agglomerates;     // absent if not computed
+  std::string agglomerate_grid;                      // how the coherence grid was chosen
+  double agglomerate_threshold = 0.8;                // the |C| threshold used
   std::filesystem::path summary_path, profile_path;  // profile_path empty if none
+  std::filesystem::path agglomerates_path, agglomerate_pdfs_path;  // empty if none
 };
+
+struct RunInfo;
+
+// The rows of grains/NNNNNN.csv (bodies numbered in build order) that are not grains: the
+// driven bodies of series.csv, walls and the shear cell's first bodies. Empty without the
+// scenario (nothing can be told apart).
+std::vector<std::string> non_grain_rows(const RunInfo& run,
+                                        const std::vector<std::string>& driven_bodies);
 
 // Throws sg::Error only when the run folder itself is unusable (no or malformed
 // series.csv); anything that merely cannot be computed becomes null plus a note.

@@ -10,7 +10,10 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "analysis/coherence.h"
+#include "analysis/velocity_grid.h"
 #include "core/error.h"
+#include "render/coherence_frames.h"
 #include "render/colormap.h"
 
 namespace sg {
@@ -54,7 +57,34 @@ double quantile(std::vector<double>& v, double q) {
   return v[k];
 }
 
+// Moreland's cool-warm diverging map (K. Moreland, "Diverging Color Maps for Scientific
+// Visualization", ISVC 2009), his table sampled every 1/8: blue -> light grey -> red, equal
+// lightness on both sides, so C = -0.9 and C = +0.9 look equally strong.
+Rgb cool_warm(double t) {
+  static constexpr std::array<std::array<double, 3>, 9> kTable = {{
+      {59, 76, 192},
+      {98, 130, 234},
+      {141, 176, 254},
+      {184, 208, 249},
+      {221, 221, 221},
+      {245, 196, 173},
+      {244, 154, 123},
+      {222, 96, 77},
+      {180, 4, 38},
+  }};
+  if (std::isnan(t)) return {0.45, 0.45, 0.45};  // undefined: darker than the midpoint
+  t = std::fmin(1.0, std::fmax(0.0, t));
+  const double x = t * 8.0;
+  const int i = std::min(7, static_cast<int>(x));
+  const double f = x - i;
+  const auto& a = kTable[static_cast<std::size_t>(i)];
+  const auto& b = kTable[static_cast<std::size_t>(i + 1)];
+  return {((1 - f) * a[0] + f * b[0]) / 255.0, ((1 - f) * a[1] + f * b[1]) / 255.0,
+          ((1 - f) * a[2] + f * b[2]) / 255.0};
+}
+
 std::string unit_of(const std::string& field) {
+  if (field == "coherence") return "1";
   if (field.rfind("velocity", 0) == 0) return "length/time";
   if (field.rfind("displacement", 0) == 0) return "length";
   if (field == "green_lagrange_norm") return "1";
@@ -138,6 +168,7 @@ struct Frame {
 struct Style {
   std::string field;
   bool categorical = false;
+  bool diverging = false;  // cool-warm instead of viridis
   double lo = 0.0, hi = 1.0;
   std::optional<std::pair<double, double>> periodic;
   std::string title;
@@ -146,7 +177,7 @@ struct Style {
 Rgb colour_of(const Style& s, double v) {
   if (s.categorical) return category_colour(static_cast<int>(std::lround(v)));
   const double t = s.hi > s.lo ? (v - s.lo) / (s.hi - s.lo) : 0.5;
-  return viridis(t);
+  return s.diverging ? cool_warm(t) : viridis(t);
 }
 
 // The x shifts (multiples of the period) at which a cell spanning [x0, x1] shows in the
@@ -360,7 +391,7 @@ void draw_decorations(cairo_t* cr, const Layout& l, const Style& s, const Frame&
   const double top = l.plot_y0 + 2.4 * l.font, bottom = l.plot_y1 - 0.5 * l.font;
   cairo_pattern_t* bar = cairo_pattern_create_linear(0, bottom, 0, top);
   for (int k = 0; k <= 20; ++k) {
-    const Rgb c = viridis(k / 20.0);
+    const Rgb c = s.diverging ? cool_warm(k / 20.0) : viridis(k / 20.0);
     cairo_pattern_add_color_stop_rgb(bar, k / 20.0, c.r, c.g, c.b);
   }
   cairo_rectangle(cr, cx, top, cw, bottom - top);
@@ -385,6 +416,65 @@ void draw_decorations(cairo_t* cr, const Layout& l, const Style& s, const Frame&
   }
 }
 
+// Coherence at each grain's centre, per frame, indexed by body id (NaN for bodies without
+// a grain row or where C is undefined): the numbers the "coherence" pictures show.
+std::vector<std::vector<double>> grain_coherence(const fs::path& run_dir,
+                                                 const std::vector<PvdEntry>& entries,
+                                                 const RenderOptions& options, std::string& note) {
+  std::vector<GrainSnapshot> snaps;
+  for (const PvdEntry& e : entries) {
+    const fs::path csv = run_dir / "grains" / (e.file.stem().string() + ".csv");
+    SG_VERIFY(fs::exists(csv), "render --field coherence: '"
+                                   << csv.string() << "' is missing (the grain snapshot of '"
+                                   << e.file.filename().string() << "')");
+    snaps.push_back(
+        without_bodies(read_grain_snapshot(csv.string(), e.time), options.non_grain_rows));
+  }
+  double diameter = options.mean_diameter;
+  for (std::size_t k = 0; !(diameter > 0.0) && k < snaps.size(); ++k)
+    diameter = mean_equivalent_diameter(snaps[k]);
+  SG_VERIFY(diameter > 0.0,
+            "render --field coherence: no grain in " << (run_dir / "grains").string());
+  const CoherenceSetup setup = choose_coherence_setup(snaps, diameter, options.periodic, {});
+  note = "coherence grid: " + setup.note;
+  std::vector<std::vector<double>> out;
+  for (const GrainSnapshot& snap : snaps) {
+    const CoherenceField c =
+        compute_coherence(interpolate_velocity_grid(snap, setup.grid, setup.params.interpolation),
+                          setup.params.coherence);
+    std::vector<double> by_body;
+    for (std::size_t g = 0; g < snap.size(); ++g) {
+      int id = -1;
+      try {
+        id = std::stoi(snap.body[g]);
+      } catch (const std::exception&) {
+        SG_THROW("render --field coherence: grain snapshot at t = "
+                 << snap.time << ": body '" << snap.body[g] << "' is not a body number");
+      }
+      SG_VERIFY(id >= 0 && id < (1 << 24), "render --field coherence: body number " << id);
+      if (by_body.size() <= static_cast<std::size_t>(id))
+        by_body.resize(static_cast<std::size_t>(id) + 1, std::numeric_limits<double>::quiet_NaN());
+      by_body[static_cast<std::size_t>(id)] = coherence_at(c, snap.position[g]);
+    }
+    out.push_back(std::move(by_body));
+  }
+  return out;
+}
+
+// Adds the point array "coherence" to a mesh: each point gets its body's value.
+void add_coherence_array(VtuMesh& m, const std::vector<double>& by_body) {
+  const std::vector<double> body = point_scalar(m, "body_id");
+  VtuArray a;
+  a.name = "coherence";
+  a.values.resize(m.points.size(), std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t p = 0; p < body.size(); ++p) {
+    const long id = std::lround(body[p]);
+    if (id >= 0 && static_cast<std::size_t>(id) < by_body.size())
+      a.values[p] = by_body[static_cast<std::size_t>(id)];
+  }
+  m.point_data.push_back(std::move(a));
+}
+
 void write_png(const Layout& l, const Style& s, const Frame& f, const fs::path& path) {
   cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, l.width, l.height);
   cairo_t* cr = cairo_create(surface);
@@ -407,7 +497,7 @@ void write_png(const Layout& l, const Style& s, const Frame& f, const fs::path& 
 
 bool field_defined_on_rigid(const std::string& field) {
   return field.rfind("velocity", 0) == 0 || field.rfind("displacement", 0) == 0 ||
-         field == "body" || field == "body_id";
+         field == "body" || field == "body_id" || field == "coherence";
 }
 
 std::pair<double, double> field_range(const std::vector<VtuMesh>& meshes,
@@ -437,6 +527,8 @@ RenderResult render_run(const fs::path& run_dir, const RenderOptions& options) {
   Style style;
   style.field = options.field;
   style.categorical = options.field == "body" || options.field == "body_id";
+  const bool coherence = options.field == "coherence";
+  style.diverging = coherence;
   style.periodic = options.periodic;
   style.title = options.title;
 
@@ -448,6 +540,7 @@ RenderResult render_run(const fs::path& run_dir, const RenderOptions& options) {
     const VtuMesh m = read_vtu(e.file);
     for (const Vec2& p : m.points)
       world.add(p);
+    if (coherence) continue;  // computed from the grain snapshots below; range fixed
     if (!style.categorical && !options.range)
       accumulate_range(m, options.field, lo, hi, &values);
     else
@@ -459,11 +552,18 @@ RenderResult render_run(const fs::path& run_dir, const RenderOptions& options) {
     world.x1 = options.periodic->second;
   }
   RenderResult result;
+  std::vector<std::vector<double>> coherence_by_frame;
+  if (coherence) {
+    coherence_by_frame = grain_coherence(run_dir, entries, options, result.note);
+    // C lies in [-1, 1] (Cauchy-Schwarz, coherence.h): one fixed range for every run.
+    lo = -1.0;
+    hi = 1.0;
+  }
   if (!style.categorical) {
     if (options.range) {
       lo = options.range->first;
       hi = options.range->second;
-    } else if (!values.empty()) {
+    } else if (!values.empty() && !coherence) {
       const double q01 = quantile(values, 0.01), q99 = quantile(values, 0.99);
       if (options.robust_range) {
         lo = q01;
@@ -497,7 +597,8 @@ RenderResult render_run(const fs::path& run_dir, const RenderOptions& options) {
   fs::create_directories(out_dir);
   const std::size_t first = options.last_frame_only ? entries.size() - 1 : 0;
   for (std::size_t i = first; i < entries.size(); ++i) {
-    const VtuMesh m = read_vtu(entries[i].file);
+    VtuMesh m = read_vtu(entries[i].file);
+    if (coherence) add_coherence_array(m, coherence_by_frame[i]);
     const std::string number = entries[i].file.stem().string();
     Frame frame{&m, entries[i].time, number};
     const fs::path png = out_dir / (options.field + "_" + number + ".png");

@@ -14,7 +14,15 @@
 // frame, taken over the points of the cells that are coloured by it (or its 1st-99th
 // percentiles with robust_range). Periodic runs are
 // drawn over one period, bodies crossing the seam wrapped to both sides.
+//
+// field "coherence": each grain filled flat with the coherence C of paper 002 eq. 5 at its
+// centre (bilinear between the grid nodes around it), computed from the grain snapshot
+// grains/NNNNNN.csv that has the picture's number, with the grid and parameters of
+// `softgrain analyze` (render/coherence_frames.h). Diverging colour map (Moreland's
+// cool-warm), fixed range [-1, 1]: red counter-clockwise, blue clockwise (with the shear);
+// dark grey where C is undefined (a pore, the layer's edge) and for non-grain bodies.
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -36,6 +44,10 @@ struct RenderOptions {
   std::optional<std::pair<double, double>> periodic;  // x span [x_min, x_max) if periodic
   std::string title;                                  // e.g. the run name
   bool movie = true;  // also an MP4 when ffmpeg is on PATH and every frame is drawn
+  // For field "coherence": rows of grains/NNNNNN.csv that are not grains (render/analyze_run.h
+  // non_grain_rows), and the mean grain diameter (NaN: from the first snapshot's areas).
+  std::vector<std::string> non_grain_rows;
+  double mean_diameter = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct RenderResult {
@@ -46,7 +58,8 @@ struct RenderResult {
   std::string note;             // why there is no movie, etc.
 };
 
-// True for fields that are defined on rigid bodies too (velocity, displacement, body).
+// True for fields that are defined on rigid bodies too (velocity, displacement, body,
+// coherence).
 bool field_defined_on_rigid(const std::string& field);
 
 // The range of `field` over the coloured points of every mesh (see above). Throws

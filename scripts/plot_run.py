@@ -1,0 +1,251 @@
+#!/usr/bin/python3
+"""Plots of a run folder analysed by `softgrain analyze`, drawn into RUN_DIR/analysis/.
+
+    /usr/bin/python3 scripts/plot_run.py RUN_DIR      (softgrain analyze --plots runs it)
+
+Reads what `softgrain run` and `softgrain analyze` wrote and draws, each when its inputs
+are there (otherwise it says why and goes on):
+
+  mu.png               mu(t) = Ft(t)/Fn(t) of the first bodies `top` and `bottom` (series.csv,
+                       sign convention of docs/analysis.md), the steady window shaded and
+                       the window means (summary.json) as lines
+  profiles.png         vx and vy across the gap: mean +- one standard deviation per bin
+                       (profiles.csv)
+  energy.png           shares of the dissipation p_wb (bulk damping) and p_ws (contacts), and
+                       the mean powers over the window: damping, contacts, external work
+                       (summary.json)
+  agglomerate_pdfs.png grain-weighted PDFs of omega~, diameter and lifetime of the
+                       agglomerates (agglomerate_pdfs.csv)
+
+Needs numpy and matplotlib (Debian: python3-numpy, python3-matplotlib). Each picture is
+written to a temporary file and renamed, so a reader never sees half a PNG. Exit status 0
+if every picture whose inputs exist was drawn, 1 on an error (one line on stderr).
+"""
+
+import csv
+import json
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")  # no display: files only
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+SUMMARY_FORMAT = "softgrain-analysis-summary"
+SUMMARY_VERSION = 1
+
+
+class PlotError(Exception):
+    pass
+
+
+def read_csv(path):
+    """Columns of a CSV (header line, '#' comments skipped) as {name: list of str}."""
+    with open(path, newline="") as f:
+        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]
+    if not rows:
+        raise PlotError(f"{path}: empty file")
+    header, body = rows[0], rows[1:]
+    for k, r in enumerate(body, start=2):
+        if len(r) != len(header):
+            raise PlotError(f"{path}:{k}: {len(r)} fields, the header has {len(header)}")
+    return {name: [r[i] for r in body] for i, name in enumerate(header)}
+
+
+def numbers(path, table, name):
+    """One column as floats (empty cells -> NaN)."""
+    if name not in table:
+        raise PlotError(f"{path}: no column '{name}' (present: {', '.join(table)})")
+    out = []
+    for k, v in enumerate(table[name], start=2):
+        try:
+            out.append(float(v) if v != "" else math.nan)
+        except ValueError:
+            raise PlotError(f"{path}:{k}: column '{name}': cannot parse '{v}' as a number")
+    return np.array(out)
+
+
+def read_summary(analysis_dir):
+    path = os.path.join(analysis_dir, "summary.json")
+    if not os.path.exists(path):
+        raise PlotError(f"{path} is missing: run 'softgrain analyze RUN_DIR' first")
+    with open(path) as f:
+        doc = json.load(f)
+    if doc.get("format") != SUMMARY_FORMAT or doc.get("version") != SUMMARY_VERSION:
+        raise PlotError(
+            f"{path}: format '{doc.get('format')}' version {doc.get('version')}, expected "
+            f"'{SUMMARY_FORMAT}' version {SUMMARY_VERSION}")
+    return doc
+
+
+def value(summary, key):
+    """A quantity of summary.json; None if absent or null."""
+    q = summary.get("quantities", {}).get(key)
+    return None if q is None else q.get("value")
+
+
+def save(fig, path):
+    tmp = path + ".tmp.png"
+    fig.savefig(tmp, dpi=110)
+    plt.close(fig)
+    os.replace(tmp, path)
+    return path
+
+
+def plot_mu(run_dir, analysis_dir, summary):
+    path = os.path.join(run_dir, "series.csv")
+    series = read_csv(path)
+    # docs/analysis.md: Fn = n B_fy, Ft = -s B_fx; top s = n = +1, bottom s = n = -1.
+    bodies = [("top", 1.0, 1.0), ("bottom", -1.0, -1.0)]
+    if not all(f"{b}_fx" in series and f"{b}_fy" in series for b, _, _ in bodies):
+        return None, "no mu(t): series.csv has no 'top' and 'bottom' columns (not a shear cell)"
+    t = numbers(path, series, "time")
+    fig, ax = plt.subplots(figsize=(8, 4.2))
+    t0, t1 = value(summary, "window_begin"), value(summary, "window_end")
+    if t0 is not None and t1 is not None:
+        ax.axvspan(t0, t1, color="0.9", label=f"window [{t0:.3g}, {t1:.3g}]")
+    colours = {"top": "tab:red", "bottom": "tab:blue"}
+    for body, s, n in bodies:
+        fn = n * numbers(path, series, f"{body}_fy")
+        ft = -s * numbers(path, series, f"{body}_fx")
+        with np.errstate(divide="ignore", invalid="ignore"):
+            mu = np.where(fn > 0.0, ft / fn, np.nan)  # undefined while nothing presses
+        ax.plot(t, mu, lw=0.8, color=colours[body], label=f"{body}")
+        mean = value(summary, f"{body}_mu")
+        if mean is not None and t0 is not None:
+            ax.hlines(mean, t0, t1, colors=colours[body], linestyles="--", lw=1.2,
+                      label=f"{body} mean {mean:.3f}")
+    mean = value(summary, "mu")
+    if mean is not None and t0 is not None:
+        ax.hlines(mean, t0, t1, colors="k", lw=1.5, label=f"mean mu = {mean:.3f}")
+    finite = np.concatenate([l.get_ydata() for l in ax.lines])
+    finite = finite[np.isfinite(finite)]
+    if finite.size:
+        # The compaction transient can reach large ratios; show the 1st-99th percentile.
+        lo, hi = np.percentile(finite, [1, 99])
+        pad = 0.1 * max(hi - lo, 1e-3)
+        ax.set_ylim(lo - pad, hi + pad)
+    ax.set_xlabel("time")
+    ax.set_ylabel("mu = Ft / Fn")
+    ax.set_title("friction coefficient of the first bodies")
+    ax.legend(fontsize=8, loc="best")
+    fig.tight_layout()
+    return save(fig, os.path.join(analysis_dir, "mu.png")), None
+
+
+def plot_profiles(analysis_dir):
+    path = os.path.join(analysis_dir, "profiles.csv")
+    if not os.path.exists(path):
+        return None, "no profiles: analysis/profiles.csv is missing"
+    p = read_csv(path)
+    y = numbers(path, p, "y_center")
+    fig, axes = plt.subplots(1, 2, figsize=(8, 4.2), sharey=True)
+    for ax, comp in zip(axes, ("vx", "vy")):
+        mean = numbers(path, p, f"{comp}_mean")
+        std = numbers(path, p, f"{comp}_std")
+        ax.fill_betweenx(y, mean - std, mean + std, color="tab:blue", alpha=0.25,
+                         label="mean +- std")
+        ax.plot(mean, y, "o-", color="tab:blue", ms=3, lw=1.2, label="mean")
+        ax.axvline(0.0, color="0.6", lw=0.8)
+        ax.set_xlabel(f"{comp} (length/time)")
+        ax.grid(alpha=0.3)
+    axes[0].set_ylabel("y (length)")
+    axes[0].legend(fontsize=8)
+    fig.suptitle("velocity profiles across the gap (grain centres, window)")
+    fig.tight_layout()
+    return save(fig, os.path.join(analysis_dir, "profiles.png")), None
+
+
+def plot_energy(analysis_dir, summary):
+    shares = [("p_wb (bulk damping)", value(summary, "bulk_share")),
+              ("p_ws (contacts)", value(summary, "contact_share"))]
+    powers = [("damping P_b", value(summary, "bulk_power")),
+              ("contacts P_s", value(summary, "contact_power")),
+              ("external work P_ext", value(summary, "external_power"))]
+    if any(v is None for _, v in shares):
+        return None, "no energy plot: the energy budget is null in summary.json"
+    fig, (a, b) = plt.subplots(1, 2, figsize=(8, 4.2))
+    names = [n for n, _ in shares]
+    vals = [v for _, v in shares]
+    a.bar(names, vals, color=["tab:orange", "tab:green"])
+    for k, v in enumerate(vals):
+        a.text(k, v, f"{v:.3f}", ha="center", va="bottom")
+    mu_b, mu_s = value(summary, "bulk_friction"), value(summary, "contact_friction")
+    if mu_b is not None and mu_s is not None:
+        a.set_title(f"dissipation shares (mu_b = {mu_b:.3f}, mu_s = {mu_s:.3f})", fontsize=9)
+    else:
+        a.set_title("dissipation shares", fontsize=10)
+    a.set_ylim(0, max(1.0, max(vals) * 1.15))
+    names = [n for n, v in powers if v is not None]
+    vals = [v for _, v in powers if v is not None]
+    b.bar(names, vals, color=["tab:orange", "tab:green", "tab:gray"][: len(vals)])
+    for k, v in enumerate(vals):
+        b.text(k, v, f"{v:.3g}", ha="center", va="bottom" if v >= 0 else "top")
+    b.axhline(0.0, color="k", lw=0.6)
+    b.set_title("mean powers over the window (energy/time)", fontsize=10)
+    for ax in (a, b):
+        ax.tick_params(axis="x", labelsize=8)
+    fig.tight_layout()
+    return save(fig, os.path.join(analysis_dir, "energy.png")), None
+
+
+def plot_agglomerates(analysis_dir):
+    path = os.path.join(analysis_dir, "agglomerate_pdfs.csv")
+    if not os.path.exists(path):
+        return None, "no agglomerate PDFs: analysis/agglomerate_pdfs.csv is missing"
+    p = read_csv(path)
+    quantity = np.array(p.get("quantity", []))
+    lo = numbers(path, p, "bin_lo")
+    hi = numbers(path, p, "bin_hi")
+    density = numbers(path, p, "density")
+    panels = [("omega_tilde", "omega~ = omega / (-V/D)"), ("diameter", "diameter (length)"),
+              ("lifetime", "lifetime (time)")]
+    fig, axes = plt.subplots(1, 3, figsize=(11, 3.8))
+    for ax, (q, label) in zip(axes, panels):
+        sel = quantity == q
+        if not sel.any() or not np.any(density[sel] > 0):
+            ax.text(0.5, 0.5, "no structure", ha="center", va="center", transform=ax.transAxes)
+        else:
+            edges = np.append(lo[sel], hi[sel][-1])
+            ax.stairs(density[sel], edges, fill=True, alpha=0.6)
+            if q == "omega_tilde":
+                used = np.nonzero(density[sel] > 0)[0]
+                ax.set_xlim(edges[used[0]] - 0.5, edges[used[-1] + 1] + 0.5)
+        ax.set_xlabel(label)
+        ax.set_ylabel("PDF (equivalent grains)")
+        ax.grid(alpha=0.3)
+    fig.suptitle("agglomerates (paper 002): PDFs weighted by equivalent grains")
+    fig.tight_layout()
+    return save(fig, os.path.join(analysis_dir, "agglomerate_pdfs.png")), None
+
+
+def main(argv):
+    if len(argv) != 2:
+        print(f"usage: {argv[0]} RUN_DIR", file=sys.stderr)
+        return 2
+    run_dir = argv[1]
+    analysis_dir = os.path.join(run_dir, "analysis")
+    try:
+        summary = read_summary(analysis_dir)
+        written, skipped = [], []
+        for draw in (lambda: plot_mu(run_dir, analysis_dir, summary),
+                     lambda: plot_profiles(analysis_dir),
+                     lambda: plot_energy(analysis_dir, summary),
+                     lambda: plot_agglomerates(analysis_dir)):
+            path, why = draw()
+            (written if path else skipped).append(path or why)
+    except (PlotError, OSError, ValueError, KeyError) as e:
+        print(f"plot_run.py: {e}", file=sys.stderr)
+        return 1
+    for p in written:
+        print(f"plot: {p}")
+    for s in skipped:
+        print(f"plot: {s}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
