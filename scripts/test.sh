@@ -7,4 +7,4 @@ bash scripts/install-deps.sh
 build=${SOFTGRAIN_BUILD_DIR:-build-test}
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DSOFTGRAIN_WERROR=ON -DSOFTGRAIN_VALIDATE=ON
 cmake --build "$build" -j"$(nproc)"
-ctest --test-dir "$build" --output-on-failure -j"$(nproc)" --timeout 900
+OMP_WAIT_POLICY=PASSIVE ctest --test-dir "$build" --output-on-failure -j"$(nproc)" --timeout 900
