@@ -10,26 +10,32 @@ namespace {
 struct RunArguments {
   std::string scenario;
   std::string output;
+  bool resume = false;
 };
 
 const Registration registration(
     {"run",
      [](CLI::App& app, const GlobalOptions& options) {
        auto args = std::make_shared<RunArguments>();
-       CLI::App* run =
-           app.add_subcommand("run", "Simulate a scenario; writes series.csv, fields/, run.log");
+       CLI::App* run = app.add_subcommand(
+           "run", "Simulate a scenario; writes series.csv, fields/, run.log, checkpoint.bin");
        run->add_option("scenario", args->scenario, "scenario TOML file")->required();
        run->add_option("-o,--output", args->output,
                        "output root folder (overrides [output] directory)");
+       run->add_flag("--resume", args->resume,
+                     "continue a stopped run from <run folder>/checkpoint.bin (same scenario)");
        return std::function<int()>([args, &options] {
          apply_threads(options);
          const ScenarioDef scenario = load_scenario(args->scenario);
          RunOptions run_options;
          run_options.progress = &std::cerr;
          run_options.output_root_override = args->output;
+         run_options.resume = args->resume;
          const RunSummary summary = run_scenario(scenario, run_options);
-         std::cout << "run '" << scenario.name << "': " << summary.steps << " steps of "
-                   << summary.time_step << ", " << summary.nodes << " nodes, "
+         std::cout << "run '" << scenario.name << "': " << summary.steps << " steps";
+         if (summary.resumed_from_step >= 0)
+           std::cout << " (resumed at step " << summary.resumed_from_step << ")";
+         std::cout << " of " << summary.time_step << ", " << summary.nodes << " nodes, "
                    << summary.node_steps_per_second / 1e6 << " M node-steps/s -> "
                    << summary.directory.string() << "\n";
          return 0;

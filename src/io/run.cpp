@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -11,25 +12,27 @@
 
 #include "core/error.h"
 #include "io/atomic_file.h"
+#include "io/checkpoint.h"
 #include "io/contact_vtk.h"
 #include "io/grain_snapshot_writer.h"
 #include "io/vtk_writer.h"
 #include "solver/explicit_solver.h"
 #include "solver/stable_time_step.h"
+#include "solver/state_snapshot.h"
 
 namespace sg {
 
 namespace {
 
 void write_run_log(const std::filesystem::path& path, const ScenarioDef& s, const Model& model,
-                   const StableStep& stable, double dt) {
+                   const StableStep& stable, double dt, const std::string& resume_note) {
   write_file_atomically(path, [&](std::ostream& out) {
     out << std::setprecision(10);
     out << "softgrain run log\nscenario = " << s.source.string() << "\nname = " << s.name
         << "\nthreads = " << omp_get_max_threads() << "\n\n[time]\nduration = " << s.duration
         << "\nsafety = " << s.time_step_safety << "\nfixed_step = " << s.fixed_time_step
         << "\n\n[output]\nseries_period = " << s.series_period
-        << "\nfield_period = " << s.field_period
+        << "\nfield_period = " << s.field_period << "\ncheckpoint_period = " << s.checkpoint_period
         << "\n\n[discretization]\nnode_spacing = " << s.discretization.mesh.spacing
         << "\nmls_neighbours = " << s.discretization.mls.neighbours
         << "\nmls_support_factor = " << s.discretization.mls.support_factor
@@ -48,7 +51,7 @@ void write_run_log(const std::filesystem::path& path, const ScenarioDef& s, cons
           << model.bodies[static_cast<std::size_t>(stable.limiting_body)].name << "'), "
           << (stable.damping_limited ? "damping-limited" : "wave-speed-limited")
           << ", dt = " << stable.dt << "\n";
-    out << "# time step used: " << dt << "\n";
+    out << "# time step used: " << dt << "\n" << resume_note;
   });
 }
 
@@ -64,6 +67,44 @@ std::string format_duration(double seconds) {
   return s.str();
 }
 
+// What a checkpoint must match besides the model: settings that change what the steps
+// compute or what the outputs mean.
+std::vector<double> run_settings(const ScenarioDef& s, double dt) {
+  std::vector<double> v = {dt, s.series_period, s.field_period};
+  if (!s.contact_laws.empty()) {
+    const ContactSettings c = contact_settings(s);
+    v.insert(v.end(), {c.cutoff, c.skin});
+    for (const ContactLawDef& law : s.contact_laws) {
+      const ContactLawParams& p = law.params;
+      v.insert(v.end(), {static_cast<double>(p.kind), p.normal_stiffness, p.tangential_stiffness,
+                         p.friction, p.adhesion, p.shear_strength});
+    }
+  }
+  return v;
+}
+
+// Cuts series.csv.partial back to what it held when the checkpoint was taken (a killed run
+// may have written rows after it), after checking that it is the same file.
+void cut_series_back(const std::filesystem::path& partial, const RunLoopState& loop) {
+  const std::string where = "cannot resume from '" + partial.string() + "': ";
+  SG_VERIFY(std::filesystem::exists(partial), where << "the file is missing");
+  const std::uintmax_t size = std::filesystem::file_size(partial);
+  SG_VERIFY(size >= loop.series_bytes, where << "it has " << size << " bytes, fewer than the "
+                                             << loop.series_bytes
+                                             << " written when the checkpoint was taken");
+  std::string kept(static_cast<std::size_t>(loop.series_bytes), '\0');
+  {
+    std::ifstream in(partial, std::ios::binary);
+    in.read(kept.data(), static_cast<std::streamsize>(kept.size()));
+    SG_VERIFY(in, where << "cannot read its first " << loop.series_bytes << " bytes");
+  }
+  const auto lines = std::count(kept.begin(), kept.end(), '\n');
+  SG_VERIFY(!kept.empty() && kept.back() == '\n' && lines == loop.series_rows + 1,
+            where << "its first " << loop.series_bytes << " bytes hold " << lines
+                  << " lines, the checkpoint expects a header and " << loop.series_rows << " rows");
+  std::filesystem::resize_file(partial, loop.series_bytes);
+}
+
 }  // namespace
 
 RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) {
@@ -72,6 +113,23 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
   const std::filesystem::path root =
       options.output_root_override.empty() ? scenario.output_root : options.output_root_override;
   const std::filesystem::path dir = root / scenario.name;
+  const std::filesystem::path checkpoint_path = dir / "checkpoint.bin";
+  // series.csv is appended and flushed row by row: rows already written survive a crash.
+  // Written first to a temporary name and renamed at the end, so a complete-looking file
+  // always means a complete run.
+  const std::filesystem::path series_path = dir / "series.csv";
+  const std::filesystem::path partial_series = dir / "series.csv.partial";
+  if (options.resume) {
+    SG_VERIFY(std::filesystem::exists(checkpoint_path),
+              "cannot resume '" << dir.string()
+                                << "': no checkpoint.bin (the run stopped before its first "
+                                   "checkpoint, or never started); run without --resume");
+    SG_VERIFY(std::filesystem::exists(partial_series),
+              "cannot resume '" << dir.string() << "': no series.csv.partial"
+                                << (std::filesystem::exists(series_path)
+                                        ? " (the run is complete: series.csv is there)"
+                                        : ""));
+  }
   std::filesystem::create_directories(dir / "fields");
 
   Model model = build_model(scenario);
@@ -85,20 +143,11 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
   const StableStep stable =
       estimate_stable_time_step(model, scenario.time_step_safety, contact_stiffness);
   const double dt = scenario.fixed_time_step > 0.0 ? scenario.fixed_time_step : stable.dt;
-  write_run_log(dir / "run.log", scenario, model, stable, dt);
-  if (options.progress)
-    *options.progress << "softgrain: " << model.bodies.size() << " bodies, " << model.node_count()
-                      << " nodes, " << model.gauss_point_count() << " Gauss points; dt = " << dt
-                      << (stable.damping_limited ? " (damping-limited)" : "") << "; "
-                      << omp_get_max_threads() << " threads\n";
+  const double checkpoint_period =
+      scenario.checkpoint_period < 0.0 ? scenario.duration / 10.0 : scenario.checkpoint_period;
+  // Computed before any restore: the model's fixed data only.
+  const CheckpointFingerprint fingerprint = fingerprint_of(model, run_settings(scenario, dt));
 
-  // series.csv is appended and flushed row by row: rows already written survive a crash.
-  // Written first to a temporary name and renamed at the end, so a complete-looking file
-  // always means a complete run.
-  const std::filesystem::path series_path = dir / "series.csv";
-  const std::filesystem::path partial_series = dir / "series.csv.partial";
-  std::ofstream series(partial_series, std::ios::trunc);
-  SG_VERIFY(series, "cannot write '" << partial_series.string() << "'");
   // Driven bodies (rigid bodies with an imposed velocity or force): the force they receive
   // from the granular system and their position.
   std::vector<BodyId> driven;
@@ -109,34 +158,99 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
     if (d.mode[0] != DriveMode::free || d.mode[1] != DriveMode::free)
       driven.push_back(static_cast<BodyId>(b));
   }
-  series << "time,step,dt,kinetic_energy,elastic_energy,external_work,damping_dissipation,"
-            "contact_dissipation,energy_residual";
-  for (BodyId b : driven) {
-    const std::string& name = model.bodies[static_cast<std::size_t>(b)].name;
-    series << ',' << name << "_fx," << name << "_fy," << name << "_x," << name << "_y";
-  }
-  series << '\n';
-  series << std::setprecision(12);
-  PvdCollection pvd(dir / "fields.pvd");
-
   // Shear cells: the friction coefficient seen by the top first body over the second half of
   // the run, mu = mean tangential / mean normal force (the full analysis: softgrain analyze).
   BodyId top_body = -1;
   for (BodyId b : driven)
     if (model.bodies[static_cast<std::size_t>(b)].name == "top") top_body = b;
-  Vec2 top_force_sum = Vec2::Zero();
-  long top_force_rows = 0;
+
   ExplicitSolver solver(model, contacts.get());
   if (contacts) std::filesystem::create_directories(dir / "contacts");
   std::filesystem::create_directories(dir / "grains");
+  PvdCollection pvd(dir / "fields.pvd");
   PvdCollection contact_pvd(dir / "contacts.pvd");
-  int snapshot = 0;
-  double next_series = 0.0, next_field = 0.0;
-  const long total_steps = static_cast<long>(std::ceil(scenario.duration / dt - 1e-9));
-  auto last_progress = clock::now();
+  RunLoopState loop;  // what the loop has written and when it writes next (checkpointed)
+  loop.next_checkpoint_time = checkpoint_period;
+  Checkpoint checkpoint;  // reused: capture_state() fills its buffers in place
+  RunSummary summary;
+  std::ofstream series;
+  std::string resume_note;
+  if (options.resume) {
+    checkpoint = read_checkpoint(checkpoint_path, fingerprint);
+    restore_state(checkpoint.state, solver, contacts.get());
+    loop = checkpoint.loop;
+    cut_series_back(partial_series, loop);
+    series.open(partial_series, std::ios::binary | std::ios::app);
+    pvd.restore(loop.field_entries);
+    if (contacts) contact_pvd.restore(loop.contact_entries);
+    summary.resumed_from_step = solver.state().step;
+    std::ostringstream note;
+    note << std::setprecision(10) << "# resumed from checkpoint.bin at step " << solver.state().step
+         << ", time " << solver.state().time << "\n";
+    resume_note = note.str();
+  } else {
+    // A checkpoint left by an earlier run in this folder must not be resumed into this one.
+    std::filesystem::remove(checkpoint_path);
+    series.open(partial_series, std::ios::binary | std::ios::trunc);
+  }
+  SG_VERIFY(series, "cannot write '" << partial_series.string() << "'");
+  write_run_log(dir / "run.log", scenario, model, stable, dt, resume_note);
+  if (options.progress)
+    *options.progress << "softgrain: " << model.bodies.size() << " bodies, " << model.node_count()
+                      << " nodes, " << model.gauss_point_count() << " Gauss points; dt = " << dt
+                      << (stable.damping_limited ? " (damping-limited)" : "") << "; "
+                      << omp_get_max_threads() << " threads"
+                      << (options.resume ? "; resumed at step " : "")
+                      << (options.resume ? std::to_string(solver.state().step) : "") << "\n";
+
+  // Rows are formatted into `row` and appended whole, so that the loop state counts the
+  // bytes of series.csv.partial exactly (what a resume cuts it back to).
+  std::ostringstream row;
+  row << std::setprecision(12);
+  auto append_series = [&]() {
+    const std::string text = row.str();
+    series.write(text.data(), static_cast<std::streamsize>(text.size()));
+    series.flush();
+    SG_VERIFY(series, "failed writing '" << partial_series.string() << "' (disk full?)");
+    loop.series_bytes += text.size();
+    row.str("");
+  };
+  if (!options.resume) {
+    row << "time,step,dt,kinetic_energy,elastic_energy,external_work,damping_dissipation,"
+           "contact_dissipation,energy_residual";
+    for (BodyId b : driven) {
+      const std::string& name = model.bodies[static_cast<std::size_t>(b)].name;
+      row << ',' << name << "_fx," << name << "_fy," << name << "_x," << name << "_y";
+    }
+    row << '\n';
+    append_series();
+  }
+  // One row: the ledger describes the state at time t (where the forces were evaluated).
+  auto write_series_row = [&](double t, long s) {
+    const EnergyLedger& e = solver.state().energy;
+    row << t << ',' << s << ',' << dt << ',' << e.kinetic << ',' << e.elastic << ','
+        << e.external_work << ',' << e.damping_dissipated << ',' << e.contact_dissipated << ','
+        << e.residual();
+    if (top_body >= 0 && t >= 0.5 * scenario.duration) {
+      const auto r =
+          static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(top_body)].rigid_index);
+      loop.top_force_sum_x += model.rigid.fx[r];
+      loop.top_force_sum_y += model.rigid.fy[r];
+      ++loop.top_force_rows;
+    }
+    for (BodyId b : driven) {
+      const auto r =
+          static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index);
+      row << ',' << model.rigid.fx[r] << ',' << model.rigid.fy[r] << ',' << model.rigid.x[r] << ','
+          << model.rigid.y[r];
+    }
+    row << '\n';
+    append_series();
+    ++loop.series_rows;
+  };
   auto write_field = [&]() {
     char name[32];
-    std::snprintf(name, sizeof name, "%06d.vtu", snapshot++);
+    std::snprintf(name, sizeof name, "%06d.vtu", loop.next_snapshot);
     write_vtu_snapshot(model, dir / "fields" / name);
     pvd.add(solver.state().time, std::string("fields/") + name);
     if (contacts) {
@@ -144,41 +258,50 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
       contact_pvd.add(solver.state().time, std::string("contacts/") + name);
     }
     char grains_name[32];
-    std::snprintf(grains_name, sizeof grains_name, "%06d.csv", snapshot - 1);
+    std::snprintf(grains_name, sizeof grains_name, "%06d.csv", loop.next_snapshot);
     write_grain_snapshot(model, dir / "grains" / grains_name);
+    ++loop.next_snapshot;
   };
-  for (long s = 0; s < total_steps; ++s) {
+  auto write_checkpoint_now = [&]() {
+    capture_state(solver, contacts.get(), checkpoint.state);
+    loop.field_entries = pvd.entries();
+    loop.contact_entries = contact_pvd.entries();
+    checkpoint.fingerprint = fingerprint;
+    checkpoint.loop = loop;
+    write_checkpoint(checkpoint_path, checkpoint);
+    ++summary.checkpoints_written;
+  };
+
+  const long total_steps = static_cast<long>(std::ceil(scenario.duration / dt - 1e-9));
+  const double tolerance = 1e-12 * scenario.duration;  // "time reached" despite round-off
+  const long first_step = solver.state().step;
+  auto last_progress = clock::now();
+  while (solver.state().step < total_steps) {
+    if (options.stop_after_steps >= 0 &&
+        solver.state().step - first_step >= options.stop_after_steps) {
+      summary.completed = false;  // as if killed here: no final snapshot, no rename
+      break;
+    }
+    const long s = solver.state().step;
     const double t = solver.state().time;
-    if (t >= next_field - 1e-12 * scenario.duration) {
+    if (t >= loop.next_field_time - tolerance) {
       write_field();
-      next_field += scenario.field_period;
+      loop.next_field_time += scenario.field_period;
     }
     solver.step(dt);
-    // The ledger describes the state at time t (where the forces were evaluated).
-    if (t >= next_series - 1e-12 * scenario.duration) {
-      const EnergyLedger& e = solver.state().energy;
-      series << t << ',' << s << ',' << dt << ',' << e.kinetic << ',' << e.elastic << ','
-             << e.external_work << ',' << e.damping_dissipated << ',' << e.contact_dissipated << ','
-             << e.residual();
-      if (top_body >= 0 && t >= 0.5 * scenario.duration) {
-        const auto r =
-            static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(top_body)].rigid_index);
-        top_force_sum += Vec2(model.rigid.fx[r], model.rigid.fy[r]);
-        ++top_force_rows;
-      }
-      for (BodyId b : driven) {
-        const auto r =
-            static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index);
-        series << ',' << model.rigid.fx[r] << ',' << model.rigid.fy[r] << ',' << model.rigid.x[r]
-               << ',' << model.rigid.y[r];
-      }
-      series << '\n' << std::flush;
-      next_series += scenario.series_period;
+    if (t >= loop.next_series_time - tolerance) {
+      write_series_row(t, s);
+      loop.next_series_time += scenario.series_period;
+    }
+    if (checkpoint_period > 0.0 && solver.state().step < total_steps &&
+        solver.state().time >= loop.next_checkpoint_time - tolerance) {
+      loop.next_checkpoint_time += checkpoint_period;  // before saving: the saved loop is current
+      write_checkpoint_now();
     }
     if (options.progress && clock::now() - last_progress > std::chrono::seconds(1)) {
       last_progress = clock::now();
       const double elapsed = std::chrono::duration<double>(last_progress - start).count();
-      const double rate = static_cast<double>(s + 1) / elapsed;
+      const double rate = static_cast<double>(s + 1 - first_step) / elapsed;
       std::ostringstream line;
       line << "\r  t = " << std::setprecision(4) << solver.state().time << " / "
            << scenario.duration << "  (" << std::fixed << std::setprecision(1)
@@ -188,19 +311,21 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
       *options.progress << line.str() << std::flush;
     }
   }
-  write_field();
-  series.close();
-  std::filesystem::rename(partial_series, series_path);
+  const long steps_here = solver.state().step - first_step;
+  if (summary.completed) {
+    write_field();
+    series.close();
+    std::filesystem::rename(partial_series, series_path);
+  }
 
-  RunSummary summary;
   summary.directory = dir;
-  summary.steps = total_steps;
+  summary.steps = solver.state().step;
   summary.time_step = dt;
   summary.nodes = model.node_count();
   summary.wall_seconds = std::chrono::duration<double>(clock::now() - start).count();
   summary.node_steps_per_second =
-      static_cast<double>(summary.nodes) * static_cast<double>(total_steps) / summary.wall_seconds;
-  if (options.progress) {
+      static_cast<double>(summary.nodes) * static_cast<double>(steps_here) / summary.wall_seconds;
+  if (options.progress && summary.completed) {
     const EnergyLedger& e = solver.state().energy;
     *options.progress << std::defaultfloat << "\r" << std::string(70, ' ')
                       << "\rdone: " << total_steps << " steps in "
@@ -209,12 +334,12 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
                       << ", external work " << e.external_work << ", damping dissipated "
                       << e.damping_dissipated << ", contact dissipated " << e.contact_dissipated
                       << ", balance residual " << e.residual() << "\n";
-    if (top_body >= 0 && top_force_sum.y() != 0.0)
+    if (top_body >= 0 && loop.top_force_sum_y != 0.0)
       *options.progress << "  friction coefficient on the top body over t > "
                         << 0.5 * scenario.duration
-                        << ": mu = -<Fx>/<Fy> = " << -top_force_sum.x() / top_force_sum.y()
+                        << ": mu = -<Fx>/<Fy> = " << -loop.top_force_sum_x / loop.top_force_sum_y
                         << " (mean normal force "
-                        << std::abs(top_force_sum.y()) / static_cast<double>(top_force_rows)
+                        << std::abs(loop.top_force_sum_y) / static_cast<double>(loop.top_force_rows)
                         << ")\n";
   }
   return summary;

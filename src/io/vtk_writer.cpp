@@ -148,6 +148,15 @@ void write_vtu_snapshot(const Model& model, const std::filesystem::path& path) {
 
 void PvdCollection::add(double time, const std::string& relative_file) {
   entries_.emplace_back(time, relative_file);
+  write();
+}
+
+void PvdCollection::restore(std::vector<std::pair<double, std::string>> entries) {
+  entries_ = std::move(entries);
+  write();
+}
+
+void PvdCollection::write() const {
   write_file_atomically(path_, [&](std::ostream& out) {
     out << std::setprecision(12)
         << "<?xml version=\"1.0\"?>\n"

@@ -22,10 +22,15 @@ class PvdCollection {
   explicit PvdCollection(std::filesystem::path pvd_path) : path_(std::move(pvd_path)) {}
   // Records a snapshot file (path relative to the .pvd's folder) at `time` and rewrites the index.
   void add(double time, const std::string& relative_file);
+  // The entries so far, and a collection continued from saved entries (a resumed run):
+  // rewrites the index with exactly those.
+  const std::vector<std::pair<double, std::string>>& entries() const { return entries_; }
+  void restore(std::vector<std::pair<double, std::string>> entries);
 
  private:
   std::filesystem::path path_;
   std::vector<std::pair<double, std::string>> entries_;
+  void write() const;
 };
 
 }  // namespace sg

@@ -117,13 +117,16 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
     root.fail("time", "required table [time] with 'duration' is missing");
   }
   if (auto t = root.table("output")) {
-    t->reject_unknown_keys({"directory", "series_period", "field_period"});
+    t->reject_unknown_keys({"directory", "series_period", "field_period", "checkpoint_period"});
     s.output_root = t->string("directory", "out");
     s.series_period = t->non_negative("series_period", 0.0);
     s.field_period = t->non_negative("field_period", 0.0);
+    if (t->has("checkpoint_period"))
+      s.checkpoint_period = t->non_negative("checkpoint_period", 0.0);
   }
   if (s.series_period == 0.0) s.series_period = s.duration / 200.0;
   if (s.field_period == 0.0) s.field_period = s.duration / 20.0;
+  if (s.checkpoint_period < 0.0) s.checkpoint_period = s.duration / 10.0;  // key absent
   if (auto t = root.table("discretization")) {
     t->reject_unknown_keys({"node_spacing", "mls_neighbours", "mls_support_factor", "gauss_points",
                             "smoothing_iterations"});

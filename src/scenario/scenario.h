@@ -56,6 +56,9 @@ struct ScenarioDef {
   std::filesystem::path output_root = "out";
   double series_period = 0.0;  // time between rows of series.csv (0: 1/200 of duration)
   double field_period = 0.0;   // time between VTK snapshots (0: 1/20 of duration)
+  // Time between checkpoints <run>/checkpoint.bin (io/checkpoint.h); 0: none; < 0 (the key
+  // is absent): 1/10 of the duration, resolved at load.
+  double checkpoint_period = -1.0;
   // [discretization]
   DiscretizationParams discretization;
   // [physics]

@@ -1,0 +1,343 @@
+// Checkpoints and exact restart through the whole run (io/run.h, io/checkpoint.h): a run
+// stopped after a checkpoint (as a killed run leaves its folder) and resumed ends with a
+// folder byte-identical to an uninterrupted run's; a damaged checkpoint, or one written for
+// another scenario or other run settings, is refused with one line naming the file and why.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "io/checkpoint.h"
+#include "io/run.h"
+#include "scenario/scenario.h"
+#include "scenes/tiny_scenario.h"
+
+namespace sg {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A small periodic shear cell: rough rigid first bodies, 8 soft cohesive grains, compaction
+// then shear; grains touch, bond and cross the seam within the run.
+std::string shear_cell(const std::string& name, int grains = 8, const std::string& extra = "") {
+  return "name = \"" + name + R"("
+[time]
+duration = 0.6
+)" + extra +
+         R"(
+[output]
+series_period = 0.01
+field_period = 0.1
+checkpoint_period = 0.2
+[discretization]
+node_spacing = 0.25
+[[materials]]
+name = "soft"
+young = 10.0
+poisson = 0.45
+damping = 0.01
+[[materials]]
+name = "first_body"
+young = 1000.0
+[[contact_laws]]
+materials = ["soft", "soft"]
+law = "cohesive"
+normal_stiffness = 2000.0
+cohesion = 0.1
+[[contact_laws]]
+materials = ["soft", "first_body"]
+law = "cohesive"
+normal_stiffness = 2000.0
+cohesion = 0.1
+[[contact_laws]]
+materials = ["first_body", "first_body"]
+law = "frictionless"
+normal_stiffness = 2000.0
+[shear_cell]
+length = 6.0
+grains = )" +
+         std::to_string(grains) +
+         R"(
+diameter = [0.85, 1.15]
+grain_material = "soft"
+first_body_material = "first_body"
+roughness_rms = 0.2
+hurst = 0.8
+compaction_time = 0.15
+velocity = 4.0
+seed = 3
+)";
+}
+
+// One folder per process: ctest runs this binary's tests in parallel processes.
+fs::path temp_root() {
+  static const fs::path root = [] {
+    const fs::path r =
+        fs::temp_directory_path() / ("softgrain_test_io_" + std::to_string(::getpid()));
+    fs::remove_all(r);
+    fs::create_directories(r);
+    return r;
+  }();
+  return root;
+}
+
+ScenarioDef scenario_file(const std::string& file, const std::string& text) {
+  const fs::path path = temp_root() / file;
+  std::ofstream(path) << text;
+  return load_scenario(path);
+}
+
+RunSummary run(const ScenarioDef& s, const fs::path& out, bool resume = false,
+               long stop_after = -1) {
+  RunOptions options;
+  options.output_root_override = out;
+  options.resume = resume;
+  options.stop_after_steps = stop_after;
+  return run_scenario(s, options);
+}
+
+std::string read_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void write_bytes(const fs::path& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+}
+
+// Every file of `a` (but run.log, which notes the resume) is in `b` with the same bytes,
+// and `b` has no other file. Returns the number of files compared.
+int expect_same_files(const fs::path& a, const fs::path& b) {
+  int compared = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(a)) {
+    if (!entry.is_regular_file()) continue;
+    const fs::path relative = fs::relative(entry.path(), a);
+    if (relative == "run.log") continue;
+    EXPECT_TRUE(fs::exists(b / relative)) << relative;
+    EXPECT_TRUE(read_bytes(entry.path()) == read_bytes(b / relative)) << relative << " differs";
+    ++compared;
+  }
+  for (const auto& entry : fs::recursive_directory_iterator(b)) {
+    if (entry.is_regular_file()) {
+      EXPECT_TRUE(fs::exists(a / fs::relative(entry.path(), b))) << entry.path() << " is extra";
+    }
+  }
+  return compared;
+}
+
+// Position of the n-th comma (1-based) of a CSV line.
+std::size_t nth_comma(const std::string& line, int n) {
+  std::size_t p = std::string::npos;
+  for (int k = 0; k < n; ++k)
+    p = line.find(',', p + 1);
+  return p;
+}
+
+// The message of the sg::Error thrown by f ("" if none).
+template <class F>
+std::string error_of(F&& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// A folder left by a run stopped between its second and third checkpoints (at 0.4 and 0.6
+// of the duration): rows and snapshots written after the checkpoint are still there.
+struct StoppedRun {
+  ScenarioDef scenario;
+  fs::path out;
+  fs::path dir;
+  long steps = 0;  // of the whole run
+};
+
+const StoppedRun& stopped_shear_cell() {
+  static const StoppedRun stopped = [] {
+    StoppedRun s;
+    s.scenario = scenario_file("cell.toml", shear_cell("cell"));
+    s.out = temp_root() / "stopped";
+    const RunSummary probe = run(s.scenario, temp_root() / "probe", false, 0);
+    const long total = static_cast<long>(std::ceil(0.6 / probe.time_step - 1e-9));
+    s.steps = total;
+    const RunSummary summary = run(s.scenario, s.out, false, (total * 3) / 5);
+    s.dir = summary.directory;
+    EXPECT_FALSE(summary.completed);
+    EXPECT_EQ(summary.checkpoints_written, 1);  // at t = 0.2 (0.4 comes after the stop)
+    return s;
+  }();
+  return stopped;
+}
+
+TEST(CheckpointRestart, StoppedAndResumedRunIsByteIdenticalToAnUninterruptedOne) {
+  const StoppedRun& stopped = stopped_shear_cell();
+  const fs::path resumed_out = temp_root() / "resumed";
+  fs::copy(stopped.out, resumed_out, fs::copy_options::recursive);
+  const fs::path dir = resumed_out / "cell";
+  // The stopped folder is what a killed run leaves: a partial series with rows written
+  // after the checkpoint (0.36 time units of rows, the checkpoint holds 0.2), no series.csv.
+  ASSERT_TRUE(fs::exists(dir / "series.csv.partial"));
+  ASSERT_FALSE(fs::exists(dir / "series.csv"));
+  ASSERT_TRUE(fs::exists(dir / "checkpoint.bin"));
+  ASSERT_TRUE(fs::exists(dir / "fields" / "000003.vtu"));  // t = 0.3, after the checkpoint
+
+  const RunSummary resumed = run(stopped.scenario, resumed_out, true);
+  EXPECT_TRUE(resumed.completed);
+  EXPECT_GT(resumed.resumed_from_step, 0);
+  EXPECT_LT(resumed.resumed_from_step, stopped.steps / 2);
+  EXPECT_EQ(resumed.steps, stopped.steps);
+
+  const RunSummary whole = run(stopped.scenario, temp_root() / "whole");
+  EXPECT_EQ(whole.resumed_from_step, -1);
+  EXPECT_EQ(whole.checkpoints_written, 2);
+  // series.csv, fields/, contacts/, grains/, the .pvd indexes, checkpoint.bin.
+  const int files = expect_same_files(whole.directory, dir);
+  EXPECT_EQ(files, 1 + 3 * 7 + 2 + 1);  // 7 snapshots: t = 0, 0.1, ..., 0.5 and the end
+  // The run did what makes a restart hard: contacts carry energy, the series has every row.
+  const std::string series = read_bytes(dir / "series.csv");
+  EXPECT_EQ(std::count(series.begin(), series.end(), '\n'), 1 + 60);
+  EXPECT_NE(read_bytes(dir / "run.log").find("resumed from checkpoint.bin at step"),
+            std::string::npos);
+}
+
+TEST(CheckpointRestart, GrainCrossingTheSeamResumesExactly) {
+  // The tiny scene (floor, soft and rigid discs, three laws) made periodic, with two more
+  // soft grains that meet across the seam x = 3 and bond; stopped after the crossing.
+  const ScenarioDef s = scenario_file("seam.toml", std::string(R"(
+name = "seam"
+[time]
+duration = 0.2
+[output]
+series_period = 0.002
+field_period = 0.05
+checkpoint_period = 0.05
+)") + scenes::kTinyScenarioBody + R"(
+[periodic]
+x_min = -3.0
+x_max = 3.0
+[[grains]]
+name = "crossing"
+center = [2.4, -0.1]
+radius = 0.3
+material = "soft"
+velocity = [4.0, 0.0]
+[[grains]]
+name = "waiting"
+center = [-2.6, -0.1]
+radius = 0.3
+material = "soft"
+)");
+  const RunSummary whole = run(s, temp_root() / "seam_whole");
+  const RunSummary stopped = run(s, temp_root() / "seam_resumed", false, whole.steps * 7 / 10);
+  ASSERT_FALSE(stopped.completed);
+  ASSERT_EQ(stopped.checkpoints_written, 2);  // t = 0.05, 0.1; stopped at t = 0.14
+  const RunSummary resumed = run(s, temp_root() / "seam_resumed", true);
+  EXPECT_GT(resumed.resumed_from_step, whole.steps / 2 - 2);
+  EXPECT_EQ(expect_same_files(whole.directory, stopped.directory), 1 + 3 * 5 + 2 + 1);
+  // The crossing grain wrapped (its centre went from x = 2.4 moving +x to x < 0), and
+  // contacts dissipated or stored energy (the ledger's contact column is not 0).
+  const std::string grains = read_bytes(whole.directory / "grains" / "000004.csv");
+  std::istringstream lines(grains);
+  std::string line;
+  std::getline(lines, line);  // header
+  std::vector<double> x;
+  while (std::getline(lines, line))
+    x.push_back(std::stod(line.substr(line.find(',') + 1)));
+  ASSERT_EQ(x.size(), 5u);
+  EXPECT_LT(x[2], 0.0) << grains;  // bodies: the tiny scene's 2 grains, ours, the floor
+  const std::string series = read_bytes(whole.directory / "series.csv");
+  const std::string last = series.substr(series.rfind('\n', series.size() - 2) + 1);
+  EXPECT_NE(std::stod(last.substr(nth_comma(last, 7) + 1)), 0.0) << last;
+}
+
+TEST(CheckpointRestart, DamagedCheckpointIsRefusedNamingTheFileAndTheReason) {
+  const StoppedRun& stopped = stopped_shear_cell();
+  const fs::path original = stopped.dir / "checkpoint.bin";
+  const std::string bytes = read_bytes(original);
+  ASSERT_GT(bytes.size(), 1000u);
+  const fs::path out = temp_root() / "damaged";
+  const fs::path checkpoint = out / "cell" / "checkpoint.bin";
+  auto resume_with = [&](const std::string& content) {
+    fs::remove_all(out);
+    fs::copy(stopped.out, out, fs::copy_options::recursive);
+    write_bytes(checkpoint, content);
+    return error_of([&] { run(stopped.scenario, out, true); });
+  };
+  const std::string named = "checkpoint '" + checkpoint.string() + "': ";
+
+  std::string flipped = bytes;
+  flipped[bytes.size() / 2] = static_cast<char>(flipped[bytes.size() / 2] ^ 0x01);
+  std::string message = resume_with(flipped);
+  EXPECT_NE(message.find(named + "corrupted (the checksum"), std::string::npos) << message;
+
+  message = resume_with(bytes.substr(0, bytes.size() - 100));
+  EXPECT_NE(message.find(named + "truncated"), std::string::npos) << message;
+  message = resume_with(bytes.substr(0, 10));
+  EXPECT_NE(message.find(named + "truncated"), std::string::npos) << message;
+
+  std::string other = bytes;
+  other[0] = 'X';
+  message = resume_with(other);
+  EXPECT_NE(message.find(named + "not a softgrain checkpoint"), std::string::npos) << message;
+
+  std::string version = bytes;
+  version[8] = static_cast<char>(version[8] + 1);
+  message = resume_with(version);
+  EXPECT_NE(message.find(named + "format version"), std::string::npos) << message;
+
+  // The intact file still resumes (the refusals came from the damage, not the setup).
+  EXPECT_EQ(resume_with(bytes), "");
+  // One line.
+  EXPECT_EQ(resume_with(flipped).find('\n'), std::string::npos);
+}
+
+TEST(CheckpointRestart, CheckpointOfAnotherScenarioIsRefused) {
+  const StoppedRun& stopped = stopped_shear_cell();
+  auto resume_other = [&](const std::string& file, const std::string& text) {
+    const ScenarioDef other = scenario_file(file, text);
+    const fs::path out = temp_root() / ("other_" + other.name);
+    fs::remove_all(out);
+    fs::create_directories(out);
+    fs::copy(stopped.out / "cell", out / other.name, fs::copy_options::recursive);
+    return error_of([&] { run(other, out, true); });
+  };
+  // Another sample: 9 grains instead of 8.
+  std::string message = resume_other("nine.toml", shear_cell("nine", 9));
+  EXPECT_NE(message.find("checkpoint.bin': written for another model ("), std::string::npos)
+      << message;
+  // Same sizes, other material: the counts agree, the model hash does not.
+  std::string stiffer = shear_cell("stiffer");
+  stiffer.replace(stiffer.find("young = 10.0"), 12, "young = 12.0");
+  message = resume_other("stiffer.toml", stiffer);
+  EXPECT_NE(message.find("written for another model (same sizes"), std::string::npos) << message;
+  // Same model, another time step.
+  message = resume_other("step.toml", shear_cell("step", 8, "fixed_step = 0.0005"));
+  EXPECT_NE(message.find("written with other run settings"), std::string::npos) << message;
+}
+
+TEST(CheckpointRestart, ResumeNeedsACheckpointAndAnUnfinishedRun) {
+  const StoppedRun& stopped = stopped_shear_cell();
+  const fs::path out = temp_root() / "no_checkpoint";
+  fs::copy(stopped.out, out, fs::copy_options::recursive);
+  fs::remove(out / "cell" / "checkpoint.bin");
+  std::string message = error_of([&] { run(stopped.scenario, out, true); });
+  EXPECT_NE(message.find("no checkpoint.bin"), std::string::npos) << message;
+
+  // A completed run (resumed to the end) has nothing left to resume.
+  fs::copy(stopped.out, out, fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+  ASSERT_TRUE(run(stopped.scenario, out, true).completed);
+  message = error_of([&] { run(stopped.scenario, out, true); });
+  EXPECT_NE(message.find("the run is complete"), std::string::npos) << message;
+}
+
+}  // namespace
+}  // namespace sg
