@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "io/atomic_file.h"
+#include "solver/step_controller.h"
 
 namespace sg {
 
@@ -179,6 +180,30 @@ void describe(A& a, S& f) requires std::is_same_v<std::remove_const_t<S>, Checkp
   a(f.gauss_points);
   a(f.model_hash);
   a(f.settings_hash);
+}
+
+// The adaptive step controller's state (solver/step_controller.h), for the run loop to save
+// as a member of RunLoopState (with StepController::seal() before each checkpoint and
+// set_state() after a restore).
+template <class A, class S>
+void describe(A& a, S& t) requires std::is_same_v<std::remove_const_t<S>, StepStatistics> {
+  a(t.accepted);
+  a(t.rejected);
+  a(t.estimates);
+  a(t.dt_min);
+  a(t.dt_max);
+  a(t.last_rejection);
+}
+
+template <class A, class S>
+void describe(A& a, S& c) requires std::is_same_v<std::remove_const_t<S>, StepControllerState> {
+  a(c.dt);
+  a(c.stable_dt);
+  a(c.energy_scale);
+  a(c.last_residual);
+  a(c.since_estimate);
+  a(c.since_reduction);
+  a(c.statistics);
 }
 
 template <class A, class S>

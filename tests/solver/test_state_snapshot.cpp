@@ -198,6 +198,17 @@ TEST(StateSnapshot, CaptureReusesTheSnapshotBuffers) {
   EXPECT_EQ(snapshot.rigid_x.data(), rigid_x);
 }
 
+TEST(StateSnapshot, SolverMembersAreTheOnesTheSnapshotKnows) {
+  // SolverSnapshotAccess (state_snapshot.cpp) copies the solver's private pending
+  // increments by name. A member added to ExplicitSolver changes its size and fails this
+  // test: if the member carries state from one step to the next, add it to
+  // SolverSnapshotAccess and SolverPendingIncrements (and to io/checkpoint.cpp), then update
+  // the expected layout here.
+  const std::size_t known = sizeof(Model*) + sizeof(ContactSystem*) + sizeof(SolverState) +
+                            sizeof(SolverPendingIncrements) + sizeof(std::vector<double>);
+  EXPECT_EQ(sizeof(ExplicitSolver), known);
+}
+
 TEST(StateSnapshot, SnapshotOfAnotherModelIsRefused) {
   Scene run;
   const StateSnapshot snapshot = capture_state(run.solver, &run.contacts);
