@@ -57,6 +57,14 @@ enum class DriveMode : std::uint8_t {
   free,      // integrated from the forces it receives
   velocity,  // velocity imposed (piecewise-linear history); the reaction force is measured
   force,     // a constant imposed force (or torque) added to the contact forces
+  // Servo-controlled load: an imposed force history F(t) plus a linear viscous force
+  // -c v on the same degree of freedom, so that the body settles where the force it
+  // receives balances F instead of bouncing on the granular layer (a confining pressure:
+  // F = -p L on the top first body's y). The viscous force is treated implicitly (no time
+  // step limit) and its work is booked as servo dissipation in the energy ledger. There is
+  // no target velocity: the servo holds the body at rest on average, and over a window in
+  // which the body does not drift the mean force received equals the mean of F.
+  load,
 };
 
 // A piecewise-linear function of time, constant beyond its ends (imposed velocities).
@@ -69,8 +77,10 @@ struct PiecewiseLinear {
 
 struct RigidDrive {
   DriveMode mode[3] = {DriveMode::free, DriveMode::free, DriveMode::free};  // x, y, theta
-  PiecewiseLinear velocity[3];  // used when mode == velocity (length/time, rad/time)
-  double force[3] = {0, 0, 0};  // used when mode == force (force, force, torque)
+  PiecewiseLinear velocity[3];         // used when mode == velocity (length/time, rad/time)
+  double force[3] = {0, 0, 0};         // used when mode == force (force, force, torque)
+  PiecewiseLinear load[3];             // used when mode == load: F(t) (force, force, torque)
+  double load_damping[3] = {0, 0, 0};  // mode == load: c (force/velocity; torque.time/rad)
 };
 
 // Rigid bodies: a few scalars each (structure of arrays, one entry per rigid body).

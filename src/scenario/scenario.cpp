@@ -96,6 +96,42 @@ ContactLawDef read_contact_law(const TomlReader& t) {
   return d;
 }
 
+// A size range [min, max] (length), 0 < min <= max.
+SizeRangeDef read_size_range(const TomlReader& t, const char* key) {
+  const Vec2 r = t.vec2(key);
+  if (!(r.x() > 0 && r.y() >= r.x())) t.fail(key, "expected [min, max] with 0 < min <= max");
+  return SizeRangeDef{r.x(), r.y(), SizeLaw::uniform};
+}
+
+// One [[shear_cell.components]]: a shape law, its number fraction, material and kind.
+GrainComponentDef read_shear_cell_component(const TomlReader& t,
+                                            const std::set<std::string>& material_names) {
+  t.reject_unknown_keys(
+      {"name", "shape", "fraction", "diameter", "major_axis", "minor_axis", "material", "rigid"});
+  GrainComponentDef c;
+  c.shape.kind = t.one_of("shape", {"disc", "ellipse"}, "disc") == "disc" ? GrainShapeKind::disc
+                                                                          : GrainShapeKind::ellipse;
+  c.name = t.string("name", c.shape.kind == GrainShapeKind::disc ? "discs" : "ellipses");
+  c.number_fraction = t.positive("fraction");
+  if (c.shape.kind == GrainShapeKind::disc) {
+    c.shape.diameter = read_size_range(t, "diameter");
+    for (const char* key : {"major_axis", "minor_axis"})
+      if (t.has(key)) t.fail(key, "applies only to shape = \"ellipse\"");
+  } else {
+    // Full axis lengths; paper 003: long 1-2 um, short 0.6-1.2 um.
+    c.shape.major_axis = read_size_range(t, "major_axis");
+    c.shape.minor_axis = read_size_range(t, "minor_axis");
+    if (c.shape.minor_axis.min > c.shape.major_axis.max)
+      t.fail("minor_axis", "expected a short axis range that starts below the long axis range");
+    if (t.has("diameter")) t.fail("diameter", "applies only to shape = \"disc\"");
+  }
+  c.material = t.string("material", "");
+  if (!c.material.empty() && !material_names.count(c.material))
+    t.fail("material", "unknown material '" + c.material + "'");
+  c.rigid = t.boolean("rigid", false);
+  return c;
+}
+
 }  // namespace
 
 ScenarioDef load_scenario(const std::filesystem::path& file) {
@@ -156,7 +192,8 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
   if (auto t = root.table("shear_cell")) {
     t->reject_unknown_keys({"length", "grains", "diameter", "grain_material", "first_body_material",
                             "roughness_rms", "hurst", "first_body_thickness", "gap",
-                            "compaction_time", "velocity", "seed"});
+                            "compaction_time", "velocity", "seed", "normal_load", "pressure",
+                            "servo_damping", "components"});
     ShearCellDef c;
     c.length = t->positive("length", c.length);
     c.grains = static_cast<int>(t->integer("grains", c.grains));
@@ -175,6 +212,23 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
     c.hurst = t->number("hurst", c.hurst);
     if (!(c.hurst > 0 && c.hurst < 1)) t->fail("hurst", "expected a number in (0, 1)");
     c.first_body_thickness = t->positive("first_body_thickness", c.first_body_thickness);
+    c.normal_load = t->one_of("normal_load", {"gap", "pressure"}, "gap") == "gap"
+                        ? NormalLoad::gap
+                        : NormalLoad::pressure;
+    if (c.normal_load == NormalLoad::pressure) {
+      c.pressure = t->positive("pressure");
+      c.servo_damping = t->non_negative("servo_damping", 0.0);
+      if (t->has("gap"))
+        t->fail("gap", "the gap is an output under normal_load = \"pressure\" (remove it)");
+    } else {
+      for (const char* key : {"pressure", "servo_damping"})
+        if (t->has(key)) t->fail(key, "applies only with normal_load = \"pressure\"");
+    }
+    for (const TomlReader& ct : t->array_of_tables("components")) {
+      if (t->has("diameter"))
+        t->fail("diameter", "give the sizes in [[shear_cell.components]], not both");
+      c.components.push_back(read_shear_cell_component(ct, material_names));
+    }
     c.gap = t->non_negative("gap", 0.0);
     c.compaction_time = t->positive("compaction_time", c.compaction_time);
     c.velocity = t->number("velocity", c.velocity);
@@ -238,6 +292,8 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
     if (s.shear_cell) {
       used.insert(s.shear_cell->grain_material);
       used.insert(s.shear_cell->first_body_material);
+      for (const GrainComponentDef& c : s.shear_cell->components)
+        if (!c.material.empty()) used.insert(c.material);
     }
     try {
       MaterialPairTable table = contact_law_table(s);
@@ -301,9 +357,18 @@ Model build_model(const ScenarioDef& scenario) {
     if (g.stretch != Vec2(1.0, 1.0)) set_affine_deformation(model, b, g.stretch.asDiagonal());
     set_rigid_velocity(model, b, g.velocity, g.spin);
   }
-  if (scenario.shear_cell)
-    add_shear_cell(model, *scenario.shear_cell, material_id(scenario.shear_cell->grain_material),
-                   material_id(scenario.shear_cell->first_body_material), scenario.discretization);
+  if (scenario.shear_cell) {
+    ShearCellDef cell = *scenario.shear_cell;
+    // The servo estimate needs the grain / first-body penalty stiffness.
+    if (!scenario.contact_laws.empty()) {
+      const MaterialPairTable table = contact_law_table(scenario);
+      const int a = table.find_material(cell.grain_material);
+      const int b = table.find_material(cell.first_body_material);
+      if (table.has(a, b)) cell.contact_stiffness = table.at(a, b).normal_stiffness;
+    }
+    add_shear_cell(model, cell, material_id(cell.grain_material),
+                   material_id(cell.first_body_material), scenario.discretization);
+  }
   for (const WallDef& w : scenario.walls) {
     const BodyId b = model.add_rigid_body(w.name, make_rectangle(w.lower_left, w.upper_right, h),
                                           material_id(w.material));

@@ -17,13 +17,72 @@ PiecewiseLinear switch_at(double t1, double before, double after) {
   return PiecewiseLinear{{0.0, t1, t1 * 1.001}, {before, before, after}};
 }
 
+// The mixture to generate: the components, or one disc component of `diameter`.
+MixtureDef shear_cell_mixture(const ShearCellDef& def, double contour_spacing) {
+  MixtureDef mixture;
+  if (def.components.empty()) {
+    GrainComponentDef component;
+    component.shape.kind = GrainShapeKind::disc;
+    component.shape.diameter = def.diameter;
+    component.material.clear();
+    mixture.components.push_back(component);
+  } else {
+    mixture.components = def.components;
+  }
+  for (GrainComponentDef& c : mixture.components)
+    c.shape.contour_spacing = contour_spacing;
+  return mixture;
+}
+
+MaterialId material_by_name(const Model& model, const std::string& name) {
+  for (std::size_t i = 0; i < model.material_defs.size(); ++i)
+    if (model.material_defs[i].name == name) return static_cast<MaterialId>(i);
+  SG_THROW("shear cell: unknown grain material '" << name << "'");
+}
+
 }  // namespace
+
+double shear_cell_grain_size(const ShearCellDef& def) {
+  if (def.components.empty()) return 0.5 * (def.diameter.min + def.diameter.max);
+  double weighted = 0.0, total = 0.0;
+  for (const GrainComponentDef& c : def.components) {
+    const SizeRangeDef& range =
+        c.shape.kind == GrainShapeKind::ellipse ? c.shape.minor_axis : c.shape.diameter;
+    weighted += c.number_fraction * 0.5 * (range.min + range.max);
+    total += c.number_fraction;
+  }
+  SG_VERIFY(total > 0.0, "shear cell: the component fractions sum to zero");
+  return weighted / total;
+}
+
+double servo_damping_estimate(double young, double poisson, double height, double length,
+                              double contact_stiffness, double node_spacing, double grain_size,
+                              double mass) {
+  SG_VERIFY(young > 0.0 && height > 0.0 && length > 0.0 && mass > 0.0,
+            "servo damping estimate: E, H, L and m must be positive (E = "
+                << young << ", H = " << height << ", L = " << length << ", m = " << mass << ")");
+  const double k_layer = young / (1.0 - poisson * poisson) * length / height;
+  double k_eff = k_layer;
+  if (contact_stiffness > 0.0) {
+    const double k_contacts = contact_stiffness * node_spacing * length / grain_size;
+    k_eff = 1.0 / (1.0 / k_layer + 1.0 / k_contacts);  // springs in series
+  }
+  const double zeta = 1.0;  // critical
+  return 2.0 * zeta * std::sqrt(k_eff * mass);
+}
 
 ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId grain_material,
                              MaterialId first_body_material, const DiscretizationParams& params) {
   SG_VERIFY(def.length > 0.0 && def.grains > 0, "shear cell: length and grains must be positive");
   SG_VERIFY(def.compaction_time > 0.0, "shear cell: compaction_time must be positive");
+  SG_VERIFY(def.normal_load == NormalLoad::gap || def.pressure > 0.0,
+            "shear cell: pressure loading needs a positive pressure, got " << def.pressure);
+  SG_VERIFY(def.servo_damping >= 0.0,
+            "shear cell: servo_damping must be >= 0, got " << def.servo_damping);
   const double h = params.mesh.spacing;
+  // Clearances of the packing scale with the grains (1 for papers 001/002; paper 003 is in
+  // metres, with grains of a few 1e-7 m).
+  const double grain_size = shear_cell_grain_size(def);
   const double period = def.length;
   model.periodic_x = true;
   model.x_min = 0.0;
@@ -43,27 +102,25 @@ ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId g
       *std::min_element(top_profile.heights.begin(), top_profile.heights.end());
 
   // Grains packed in a periodic strip above the bottom surface's peaks.
-  MixtureDef mixture;
-  GrainComponentDef component;
-  component.shape.kind = GrainShapeKind::disc;
-  component.shape.diameter = def.diameter;
-  component.shape.contour_spacing = h;
-  mixture.components.push_back(component);
+  const MixtureDef mixture = shear_cell_mixture(def, h);
   const std::vector<GrainDef> grains = generate_grains(mixture, def.grains, def.seed);
   PackingDef packing;
   packing.container.kind = ContainerKind::periodic_strip;
   packing.container.x_min = 0.0;
   packing.container.x_max = period;
-  packing.container.y_min = bottom_peak + 0.05;
-  packing.min_gap = 0.02;
+  packing.container.y_min = bottom_peak + 0.05 * grain_size;
+  packing.min_gap = 0.02 * grain_size;
   const PackingResult packed = pack_grains(grains, packing, def.seed);
 
   ShearCellInfo info;
   info.bottom_mean_y = 0.0;
-  info.top_mean_y = packed.top + 0.05 - top_valley;
+  info.top_mean_y = packed.top + 0.05 * grain_size - top_valley;
   info.packed_solid_fraction = packed.solid_fraction;
-  info.gap = def.gap > 0.0 ? def.gap : 0.9 * (info.top_mean_y - info.bottom_mean_y);
-  SG_VERIFY(info.gap < info.top_mean_y - info.bottom_mean_y,
+  const double packed_height = info.top_mean_y - info.bottom_mean_y;
+  info.gap = def.normal_load == NormalLoad::pressure ? packed_height
+             : def.gap > 0.0                         ? def.gap
+                                                     : 0.9 * packed_height;
+  SG_VERIFY(def.normal_load == NormalLoad::pressure || info.gap < packed_height,
             "shear cell: gap " << info.gap << " is not smaller than the packed height "
                                << info.top_mean_y - info.bottom_mean_y
                                << " (compaction closes the gap; it cannot open it)");
@@ -87,8 +144,7 @@ ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId g
       model.add_rigid_strip("bottom", bottom, first_body_material, -period, mass, inertia);
   const BodyId top_id =
       model.add_rigid_strip("top", top, first_body_material, period, mass, inertia);
-  const double closing_speed =
-      (info.top_mean_y - info.bottom_mean_y - info.gap) / def.compaction_time;
+  const double closing_speed = (packed_height - info.gap) / def.compaction_time;
   for (BodyId b : {bottom_id, top_id}) {
     RigidDrive& d =
         model.rigid
@@ -100,11 +156,33 @@ ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId g
     d.velocity[1] = b == top_id ? switch_at(def.compaction_time, -closing_speed, 0.0)
                                 : PiecewiseLinear::constant(0.0);
     d.velocity[2] = PiecewiseLinear::constant(0.0);
+    if (b == top_id && def.normal_load == NormalLoad::pressure) {
+      // Servo-controlled confining pressure: F = -p L on the top's y, ramped up over the
+      // compaction time (a load applied at once would drop the top onto the grains).
+      info.normal_force = def.pressure * period;
+      const MaterialDef& grain = model.material_defs[static_cast<std::size_t>(grain_material)];
+      info.servo_damping =
+          def.servo_damping > 0.0
+              ? def.servo_damping
+              : servo_damping_estimate(grain.young, grain.poisson, packed_height, period,
+                                       def.contact_stiffness, h, grain_size, mass);
+      d.mode[1] = DriveMode::load;
+      d.load[1] = PiecewiseLinear{{0.0, def.compaction_time}, {0.0, -info.normal_force}};
+      d.load_damping[1] = info.servo_damping;
+      d.velocity[1] = PiecewiseLinear::constant(0.0);
+    }
   }
 
-  for (std::size_t i = 0; i < grains.size(); ++i)
-    model.add_deformable_body("grain_" + std::to_string(i), packed.contours[i], grain_material,
-                              params);
+  for (std::size_t i = 0; i < grains.size(); ++i) {
+    const std::string& name =
+        mixture.components[static_cast<std::size_t>(grains[i].component)].material;
+    const MaterialId material = name.empty() ? grain_material : material_by_name(model, name);
+    const std::string body_name = "grain_" + std::to_string(i);
+    if (grains[i].rigid)
+      model.add_rigid_body(body_name, packed.contours[i], material);
+    else
+      model.add_deformable_body(body_name, packed.contours[i], material, params);
+  }
   return info;
 }
 

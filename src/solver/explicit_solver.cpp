@@ -9,7 +9,8 @@ namespace sg {
 
 double EnergyLedger::residual() const {
   return external_work - (kinetic - initial_kinetic) -
-         (elastic + contact_elastic - initial_elastic) - damping_dissipated - contact_dissipated;
+         (elastic + contact_elastic - initial_elastic) - damping_dissipated - contact_dissipated -
+         servo_dissipated;
 }
 
 void ExplicitSolver::step(double dt) {
@@ -112,6 +113,8 @@ void ExplicitSolver::step(double dt) {
 std::pair<double, double> ExplicitSolver::advance_rigid_bodies(double dt) {
   RigidState& r = model_.rigid;
   double kinetic = 0.0, power = 0.0;
+  // Servo-loaded DOFs: sums of F_n . v and (c v_n+1/2) . v over v_n-1/2 and v_n+1/2.
+  double load_work_old = 0.0, load_work_new = 0.0, servo_old = 0.0, servo_new = 0.0;
   const double t_mid = state_.time + 0.5 * dt;  // velocities live at half steps
   for (std::size_t i = 0; i < r.size(); ++i) {
     const RigidDrive& drive = r.drive[i];
@@ -131,6 +134,23 @@ std::pair<double, double> ExplicitSolver::advance_rigid_bodies(double dt) {
         power -= received[d] * *velocity[d];
         continue;
       }
+      if (drive.mode[d] == DriveMode::load) {
+        // Servo: the imposed force F(t_n) and the viscous force -c v, the latter implicit in
+        // the new velocity so that no value of c limits the step:
+        //   m (v_n+1/2 - v_n-1/2) = dt (received + gravity + F - c v_n+1/2).
+        const double load = drive.load[d](state_.time);
+        const double c = drive.load_damping[d];
+        *velocity[d] =
+            (inertia[d] * v_old + dt * (received[d] + gravity[d] + load)) / (inertia[d] + dt * c);
+        *position[d] += dt * *velocity[d];
+        kinetic += 0.5 * inertia[d] * v_old * *velocity[d];
+        power += gravity[d] * *velocity[d];
+        load_work_old += load * v_old;
+        load_work_new += load * *velocity[d];
+        servo_old += c * *velocity[d] * v_old;
+        servo_new += c * *velocity[d] * *velocity[d];
+        continue;
+      }
       const double external =
           gravity[d] + (drive.mode[d] == DriveMode::force ? drive.force[d] : 0.0);
       *velocity[d] = v_old + dt * (received[d] + external) / inertia[d];
@@ -139,6 +159,19 @@ std::pair<double, double> ExplicitSolver::advance_rigid_bodies(double dt) {
       power += external * *velocity[d];
     }
   }
+  // A force f_n that depends on time or on v_n+1/2 is booked as 1/2 dt f_n . (v_n-1/2 +
+  // v_n+1/2), the same split as the bulk damping in step(): the time-centred kinetic energy
+  // changes over [t_n-1, t_n] by 1/2 dt v_n-1/2 . (f_n-1 + f_n), so the half with v_n-1/2
+  // closes the increment that ends now and the half with v_n+1/2 opens the next one.
+  EnergyLedger& e = state_.energy;
+  e.external_work += pending_load_work_;
+  e.servo_dissipated += pending_servo_dissipation_;
+  if (state_.step > 0) {
+    e.external_work += 0.5 * dt * load_work_old;
+    e.servo_dissipated += 0.5 * dt * servo_old;
+  }
+  pending_load_work_ = 0.5 * dt * load_work_new;
+  pending_servo_dissipation_ = 0.5 * dt * servo_new;
   return {kinetic, power};
 }
 

@@ -25,8 +25,13 @@ struct EnergyLedger {
   double external_work = 0.0;       // work of external forces (gravity, loads) so far
   double damping_dissipated = 0.0;  // energy dissipated by bulk damping so far
   double contact_dissipated = 0.0;  // energy dissipated at contacts so far
-  double contact_elastic = 0.0;     // elastic energy held by contact springs now
-  // Energy balance residual: W_ext - (K - K0) - (E - E0) - D_bulk - D_contact, with K0, E0
+  // Energy dissipated so far by the viscous force of servo-loaded rigid degrees of freedom
+  // (DriveMode::load). Kept apart from the bulk damping: it is a device of the loading,
+  // not a property of the third body, and must not count in the bulk share p_wb.
+  double servo_dissipated = 0.0;
+  double contact_elastic = 0.0;  // elastic energy held by contact springs now
+  // Energy balance residual: W_ext - (K - K0) - (E - E0) - D_bulk - D_contact - D_servo,
+  // with K0, E0
   // the values at the first force evaluation (E includes the contact springs).
   double initial_kinetic = 0.0, initial_elastic = 0.0;
   double residual() const;
@@ -63,9 +68,14 @@ class ExplicitSolver {
   // ledger always describes one instant.
   double pending_external_work_ = 0.0;
   double pending_damping_dissipation_ = 0.0;
+  // The same for servo-loaded rigid degrees of freedom (their imposed force and viscous force).
+  double pending_load_work_ = 0.0;
+  double pending_servo_dissipation_ = 0.0;
   std::vector<double> body_sums_;  // per-body partial sums of the update (scratch)
   void check_finite_velocities() const;
-  // Advances rigid bodies; returns (kinetic energy time-centred, external power).
+  // Advances rigid bodies; returns (kinetic energy time-centred, external power of gravity
+  // and constant forces). Books the load work and servo dissipation of DriveMode::load
+  // degrees of freedom in the ledger itself (they are split over two steps).
   std::pair<double, double> advance_rigid_bodies(double dt);
   void wrap_periodic_bodies();
 };
