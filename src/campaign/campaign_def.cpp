@@ -1,0 +1,620 @@
+#include "campaign/campaign_def.h"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace sg {
+namespace {
+
+namespace fs = std::filesystem;
+
+// ---------------------------------------------------------------------------------------
+// TOML values as text
+
+// Shortest text that reads back to the same double (std::to_chars), so that a campaign value
+// 0.1 is written 0.1 and not 0.10000000000000001 as toml++'s printer does.
+std::string format_double(double v, bool as_toml_float) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+  std::string s(buffer, result.ptr);
+  if (as_toml_float && s.find_first_of(".e") == std::string::npos) s += ".0";
+  return s;
+}
+
+bool is_bare_key(std::string_view k) {
+  return !k.empty() && std::all_of(k.begin(), k.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+  });
+}
+
+std::string printed(const toml::node& n) {
+  std::ostringstream s;
+  n.visit([&](const auto& v) { s << v; });
+  return s.str();
+}
+
+// The value as it is written in a TOML file.
+std::string toml_text(const toml::node& n) {
+  if (const auto* v = n.as_floating_point()) return format_double(v->get(), true);
+  if (const auto* v = n.as_integer()) return std::to_string(v->get());
+  if (const auto* v = n.as_boolean()) return v->get() ? "true" : "false";
+  if (const auto* a = n.as_array()) {
+    std::string s = "[";
+    for (std::size_t i = 0; i < a->size(); ++i)
+      s += (i ? ", " : "") + toml_text(*a->get(i));
+    return s + "]";
+  }
+  if (const auto* t = n.as_table()) {
+    std::string s = "{";
+    bool first = true;
+    for (const auto& [k, v] : *t) {
+      const std::string key =
+          is_bare_key(k.str()) ? std::string(k.str()) : printed(toml::value<std::string>(k.str()));
+      s += std::string(first ? " " : ", ") + key + " = " + toml_text(v);
+      first = false;
+    }
+    return s + " }";
+  }
+  return printed(n);  // strings (quoted and escaped by toml++), dates, times
+}
+
+// The value as it appears in a run id: numbers without a forced ".0", strings unquoted.
+std::string display_text(const toml::node& n) {
+  if (const auto* v = n.as_floating_point()) return format_double(v->get(), false);
+  if (const auto* v = n.as_string()) return v->get();
+  if (const auto* a = n.as_array()) {
+    std::string s;
+    for (std::size_t i = 0; i < a->size(); ++i)
+      s += (i ? "," : "") + display_text(*a->get(i));
+    return s;
+  }
+  return toml_text(n);
+}
+
+// Run ids are folder names and appear in shell commands: keep them to a safe alphabet.
+std::string file_safe(std::string s) {
+  for (char& c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c)) &&
+        std::string_view("._+-,").find(c) == std::string_view::npos)
+      c = '-';
+  return s;
+}
+
+std::string kind(const toml::node& n) {
+  switch (n.type()) {
+    case toml::node_type::floating_point:
+      return "a number";
+    case toml::node_type::integer:
+      return "an integer";
+    case toml::node_type::string:
+      return "a string";
+    case toml::node_type::boolean:
+      return "a boolean";
+    case toml::node_type::array:
+      return "an array";
+    case toml::node_type::table:
+      return "a table";
+    default:
+      return "a date or time";
+  }
+}
+
+// ---------------------------------------------------------------------------------------
+// Errors: "<file>:<line>: key '<key>'<where>: <message>"
+
+[[noreturn]] void fail(const fs::path& file, std::size_t line, const std::string& key,
+                       const std::string& where, const std::string& message) {
+  SG_THROW(file.string() << ":" << line << ": key '" << key << "'" << where << ": " << message);
+}
+
+std::size_t line_of(const toml::node& n) {
+  return n.source().begin.line;
+}
+
+// ---------------------------------------------------------------------------------------
+// Dotted paths into a TOML document
+
+std::vector<std::string> split_key(const std::string& key) {
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream s(key);
+  while (std::getline(s, part, '.'))
+    parts.push_back(part);
+  if (!key.empty() && key.back() == '.') parts.emplace_back();
+  return parts;
+}
+
+struct Resolved {
+  const toml::node* node = nullptr;
+  std::string error;  // why the key does not exist
+};
+
+Resolved resolve(const toml::table& root, const std::string& key) {
+  const toml::node* node = &root;
+  std::string walked;
+  for (const std::string& part : split_key(key)) {
+    if (part.empty()) return {nullptr, "is not a valid dotted key (empty component)"};
+    const std::string here = walked.empty() ? part : walked + "." + part;
+    if (const auto* t = node->as_table()) {
+      node = t->get(part);
+      if (!node) return {nullptr, "has no '" + here + "'"};
+    } else if (const auto* a = node->as_array()) {
+      if (!std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; }))
+        return {nullptr, "has an array at '" + walked + "': expected an index 0.." +
+                             std::to_string(a->size()) + " after it, got '" + part + "'"};
+      const std::size_t index = std::stoul(part);
+      if (index >= a->size())
+        return {nullptr, "has no '" + here + "' ('" + walked + "' has " +
+                             std::to_string(a->size()) + " entries)"};
+      node = a->get(index);
+    } else {
+      return {nullptr, "has " + kind(*node) + " at '" + walked + "', not a table or an array"};
+    }
+    walked = here;
+  }
+  return {node, ""};
+}
+
+// Sets `key` (which exists) to the value written `text`: the slow, layout-losing way, used
+// only when the base scenario's layout defeats in-place editing (see patch_scenario).
+void assign(toml::table& root, const std::string& key, const std::string& text) {
+  toml::table parsed = toml::parse("v = " + text);
+  const std::vector<std::string> parts = split_key(key);
+  std::string parent_key;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i)
+    parent_key += (i ? "." : "") + parts[i];
+  toml::node* parent =
+      parent_key.empty() ? &root : const_cast<toml::node*>(resolve(root, parent_key).node);
+  SG_ASSERT(parent, "key '" << key << "' was resolved before");
+  parsed.get("v")->visit([&](const auto& value) {
+    if (auto* t = parent->as_table())
+      t->insert_or_assign(parts.back(), value);
+    else if (auto* a = parent->as_array())
+      a->replace(a->cbegin() + static_cast<std::ptrdiff_t>(std::stoul(parts.back())), value);
+  });
+}
+
+// The text of `replacement` to put where the base scenario has `base`, after checking that
+// the types agree (an integer is accepted for a number, and written as one).
+std::string replacement_text(const toml::node& base, const toml::node& replacement,
+                             const std::function<void(const std::string&)>& error) {
+  if (replacement.is_table()) error("a table cannot be a value; vary its keys one by one");
+  if (base.is_floating_point() && replacement.is_integer())
+    return format_double(static_cast<double>(replacement.as_integer()->get()), true);
+  if (base.type() != replacement.type())
+    error("expected " + kind(base) + " like the base scenario's " + toml_text(base) + ", got " +
+          toml_text(replacement));
+  return toml_text(replacement);
+}
+
+// ---------------------------------------------------------------------------------------
+// Writing a run's scenario
+
+struct Edit {
+  std::size_t begin = 0, end = 0;  // byte offsets in the base text, [begin, end)
+  std::string text;
+};
+
+// Byte offsets of (line, column) positions, both 1-based, columns counted in code points as
+// toml++ counts them.
+class TextPositions {
+ public:
+  explicit TextPositions(const std::string& text) : text_(text) {
+    line_starts_.push_back(0);
+    for (std::size_t i = 0; i < text.size(); ++i)
+      if (text[i] == '\n') line_starts_.push_back(i + 1);
+  }
+  std::size_t offset(std::size_t line, std::size_t column) const {
+    std::size_t at = line_starts_.at(line - 1);
+    for (std::size_t c = 1; c < column && at < text_.size(); ++c) {
+      ++at;  // past the lead byte, then past the UTF-8 continuation bytes
+      while (at < text_.size() && (static_cast<unsigned char>(text_[at]) & 0xC0) == 0x80)
+        ++at;
+    }
+    return at;
+  }
+  std::size_t line_end(std::size_t line) const {
+    return line < line_starts_.size() ? line_starts_[line] : text_.size();
+  }
+  std::size_t line_count() const { return line_starts_.size(); }
+
+ private:
+  const std::string& text_;
+  std::vector<std::size_t> line_starts_;
+};
+
+Edit replace_node(const TextPositions& positions, const toml::node& n, std::string text) {
+  const auto& s = n.source();
+  return {positions.offset(s.begin.line, s.begin.column),
+          positions.offset(s.end.line, s.end.column), std::move(text)};
+}
+
+std::string apply_edits(const std::string& text, std::vector<Edit> edits) {
+  std::sort(edits.begin(), edits.end(),
+            [](const Edit& a, const Edit& b) { return a.begin > b.begin; });
+  std::string out = text;
+  std::size_t limit = text.size();
+  for (const Edit& e : edits) {
+    SG_VERIFY(e.end <= limit, "two varied keys overlap in the base scenario text");
+    out.replace(e.begin, e.end - e.begin, e.text);
+    limit = e.begin;
+  }
+  return out;
+}
+
+bool has_value(const toml::table& root, const std::string& key, const std::string& text) {
+  const Resolved r = resolve(root, key);
+  return r.node && toml_text(*r.node) == text;
+}
+
+struct ScenarioBase {
+  fs::path file;
+  std::string text;
+  toml::table table;
+};
+
+// A TOML basic string; toml++'s printer prefers 'literal' strings, which would stand out in a
+// scenario file written with "double quotes".
+std::string quoted(const std::string& s) {
+  const bool plain = std::all_of(s.begin(), s.end(), [](char c) {
+    return c != '"' && c != '\\' && static_cast<unsigned char>(c) >= 0x20;
+  });
+  return plain ? "\"" + s + "\"" : printed(toml::value<std::string>(s));
+}
+
+// The base scenario with the run's values, name and output folder. Edits the text in place
+// (comments and layout kept); if the result does not read back with exactly the intended
+// values (an unusual layout, e.g. an inline [output] table without `directory`), the table
+// is rebuilt and printed by toml++ instead.
+std::string patch_scenario(const ScenarioBase& base, const CampaignDef& campaign,
+                           const CampaignRun& run) {
+  const TextPositions positions(base.text);
+  std::vector<Edit> edits;
+  bool layout_ok = true;
+  for (std::size_t p = 0; p < campaign.parameters.size(); ++p)
+    edits.push_back(replace_node(positions, *resolve(base.table, campaign.parameters[p].key).node,
+                                 run.values[p]));
+  if (const toml::node* name = base.table.get("name")) {
+    edits.push_back(replace_node(positions, *name, quoted(run.id)));
+  } else {
+    // Before the first line that is not blank or a comment: still the root table.
+    std::size_t line = 1;
+    for (; line < positions.line_count(); ++line) {
+      const std::size_t a = positions.offset(line, 1), b = positions.line_end(line);
+      const std::string l = base.text.substr(a, b - a);
+      const auto first = l.find_first_not_of(" \t\r\n");
+      if (first != std::string::npos && l[first] != '#') break;
+    }
+    const std::size_t at = positions.offset(line, 1);
+    edits.push_back({at, at, "name = " + quoted(run.id) + "\n"});
+  }
+  const std::string runs = quoted(kCampaignRunsFolder);
+  if (const toml::node* output = base.table.get("output")) {
+    const toml::table* t = output->as_table();
+    if (t && t->get("directory")) {
+      edits.push_back(replace_node(positions, *t->get("directory"), runs));
+    } else if (t && !t->is_inline()) {
+      const std::size_t at = positions.line_end(t->source().begin.line);
+      edits.push_back({at, at, "directory = " + runs + "\n"});
+    } else {
+      layout_ok = false;
+    }
+  } else {
+    const bool newline = base.text.empty() || base.text.back() == '\n';
+    edits.push_back({base.text.size(), base.text.size(),
+                     std::string(newline ? "" : "\n") + "\n[output]\ndirectory = " + runs + "\n"});
+  }
+
+  std::ostringstream header;
+  header << "# Run " << run.id << " of campaign '" << campaign.name << "' ("
+         << campaign.file.filename().string() << "), written by softgrain sweep: the base\n# "
+         << "scenario " << base.file.string() << " with";
+  for (std::size_t p = 0; p < campaign.parameters.size(); ++p)
+    header << (p ? ", " : " ") << campaign.parameters[p].key << " = " << run.values[p];
+  header << ".\n";
+
+  const auto reads_back = [&](const std::string& text) {
+    try {
+      const toml::table t = toml::parse(text);
+      for (std::size_t p = 0; p < campaign.parameters.size(); ++p)
+        if (!has_value(t, campaign.parameters[p].key, run.values[p])) return false;
+      const auto output = t["output"]["directory"].value<std::string>();
+      return t["name"].value<std::string>() == run.id && output == kCampaignRunsFolder;
+    } catch (const toml::parse_error&) {
+      return false;
+    }
+  };
+  if (layout_ok) {
+    std::string text = header.str() + apply_edits(base.text, edits);
+    if (reads_back(text)) return text;
+  }
+  toml::table table = base.table;
+  for (std::size_t p = 0; p < campaign.parameters.size(); ++p)
+    assign(table, campaign.parameters[p].key, run.values[p]);
+  table.insert_or_assign("name", run.id);
+  if (!table.get("output") || !table.get("output")->is_table())
+    table.insert_or_assign("output", toml::table{});
+  table.get("output")->as_table()->insert_or_assign("directory", kCampaignRunsFolder);
+  std::ostringstream text;
+  text << header.str() << "# (printed from the parsed base scenario: its layout is not kept)\n"
+       << toml::toml_formatter{table};
+  SG_VERIFY(reads_back(text.str()), "internal: could not write the scenario of run " << run.id);
+  return text.str();
+}
+
+// ---------------------------------------------------------------------------------------
+// Reading the campaign file
+
+// A table's leaves with their dotted keys, in file order ("a.b" = 1 and [a] b = 1 alike).
+struct Leaf {
+  std::string key;
+  const toml::node* node = nullptr;
+};
+
+void collect_leaves(const toml::table& t, const std::string& prefix, std::vector<Leaf>& out) {
+  for (const auto& [k, v] : t) {
+    const std::string key =
+        prefix.empty() ? std::string(k.str()) : prefix + "." + std::string(k.str());
+    if (const auto* sub = v.as_table())
+      collect_leaves(*sub, key, out);
+    else
+      out.push_back({key, &v});
+  }
+}
+
+std::vector<Leaf> leaves(const toml::table& t) {
+  std::vector<Leaf> out;
+  collect_leaves(t, "", out);
+  std::sort(out.begin(), out.end(), [](const Leaf& a, const Leaf& b) {
+    const auto &pa = a.node->source().begin, &pb = b.node->source().begin;
+    return pa.line != pb.line ? pa.line < pb.line : pa.column < pb.column;
+  });
+  return out;
+}
+
+// The shortest tails of the keys ("young", "0.young") that tell the parameters apart.
+void assign_labels(std::vector<CampaignParameter>& parameters) {
+  std::vector<std::vector<std::string>> parts;
+  std::vector<std::size_t> taken(parameters.size(), 1);
+  for (const auto& p : parameters)
+    parts.push_back(split_key(p.key));
+  const auto label = [&](std::size_t i) {
+    std::string s;
+    const std::size_t n = std::min(taken[i], parts[i].size());
+    for (std::size_t j = parts[i].size() - n; j < parts[i].size(); ++j)
+      s += (s.empty() ? "" : ".") + parts[i][j];
+    return s;
+  };
+  for (bool changed = true; changed;) {
+    changed = false;
+    std::map<std::string, int> uses;
+    for (std::size_t i = 0; i < parameters.size(); ++i)
+      ++uses[label(i)];
+    for (std::size_t i = 0; i < parameters.size(); ++i)
+      if (uses[label(i)] > 1 && taken[i] < parts[i].size()) {
+        ++taken[i];
+        changed = true;
+      }
+  }
+  for (std::size_t i = 0; i < parameters.size(); ++i)
+    parameters[i].label = file_safe(label(i));
+}
+
+std::string string_value(const fs::path& file, const toml::table& doc, const char* key,
+                         const std::string& fallback) {
+  const toml::node* n = doc.get(key);
+  if (!n) return fallback;
+  if (const auto* s = n->as_string()) return s->get();
+  fail(file, line_of(*n), key, "", "expected a string, got " + toml_text(*n));
+}
+
+long integer_value(const fs::path& file, const toml::table& doc, const char* key, long fallback,
+                   long minimum) {
+  const toml::node* n = doc.get(key);
+  if (!n) return fallback;
+  const auto* v = n->as_integer();
+  if (!v || v->get() < minimum)
+    fail(file, line_of(*n), key, "",
+         "expected an integer >= " + std::to_string(minimum) + ", got " + toml_text(*n));
+  return static_cast<long>(v->get());
+}
+
+// One varied parameter as read from the campaign: its key, where, and its values.
+struct Varied {
+  std::string key;
+  std::string where;  // " in [grid]" or " in [[list]]"
+  std::size_t line = 0;
+  std::vector<const toml::node*> values;
+};
+
+}  // namespace
+
+CampaignDef load_campaign(const fs::path& file) {
+  SG_VERIFY(fs::exists(file), "campaign file '" << file.string() << "' does not exist");
+  toml::table doc;
+  try {
+    doc = toml::parse_file(file.string());
+  } catch (const toml::parse_error& e) {
+    SG_THROW(file.string() << ":" << e.source().begin.line << ":" << e.source().begin.column
+                           << ": TOML syntax error: " << e.description());
+  }
+  CampaignDef c;
+  c.file = file;
+  static const std::set<std::string> known = {"name",    "scenario",        "output", "parallel",
+                                              "threads", "analyze_options", "grid",   "list"};
+  for (const auto& [k, v] : doc)
+    if (!known.count(std::string(k.str())))
+      fail(file, line_of(v), std::string(k.str()), "",
+           "unknown key; expected name, scenario, output, parallel, threads, analyze_options, "
+           "[grid] or [[list]]");
+
+  c.name = string_value(file, doc, "name", file.stem().string());
+  if (c.name.empty() || file_safe(c.name) != c.name || c.name[0] == '.')
+    fail(file, doc.get("name") ? line_of(*doc.get("name")) : 1, "name", "",
+         "expected a folder name (letters, digits, '.', '_', '+', '-', ','), got \"" + c.name +
+             "\"");
+  const std::string scenario = string_value(file, doc, "scenario", "");
+  if (scenario.empty()) fail(file, 1, "scenario", "", "required: the base scenario file");
+  c.scenario =
+      fs::path(scenario).is_absolute() ? fs::path(scenario) : file.parent_path() / scenario;
+  if (!fs::exists(c.scenario))
+    fail(file, line_of(*doc.get("scenario")), "scenario", "",
+         "the base scenario '" + c.scenario.string() + "' does not exist");
+  // Relative to the campaign file, like `scenario`: the campaign folder must not depend on
+  // where the command is typed, or a resumed or gathered campaign would start a new one.
+  const fs::path output = string_value(file, doc, "output", c.output_root.string());
+  c.output_root = output.is_absolute() ? output : file.parent_path() / output;
+  c.parallel = static_cast<int>(integer_value(file, doc, "parallel", 1, 1));
+  c.threads = static_cast<int>(integer_value(file, doc, "threads", 0, 0));
+  if (const toml::node* n = doc.get("analyze_options")) {
+    const auto* a = n->as_array();
+    if (!a) fail(file, line_of(*n), "analyze_options", "", "expected an array of strings");
+    for (const auto& e : *a) {
+      if (!e.is_string())
+        fail(file, line_of(e), "analyze_options", "",
+             "expected an array of strings, got " + toml_text(e));
+      c.analyze_options.push_back(e.as_string()->get());
+    }
+  }
+
+  // --- The varied parameters: [[list]] keys first, then [grid] keys, each in file order.
+  std::vector<Varied> varied;
+  std::size_t list_runs = 1;
+  if (const toml::node* n = doc.get("list")) {
+    const auto* a = n->as_array();
+    if (!a || !a->is_array_of_tables() || a->empty())
+      fail(file, line_of(*n), "list", "", "expected [[list]] tables, one per run");
+    list_runs = a->size();
+    const std::vector<Leaf> first = leaves(*a->get(0)->as_table());
+    if (first.empty()) fail(file, line_of(*a->get(0)), "list", "", "the first [[list]] is empty");
+    for (const Leaf& l : first)
+      varied.push_back({l.key, " in [[list]]", line_of(*l.node), {}});
+    for (std::size_t e = 0; e < a->size(); ++e) {
+      const toml::table& entry = *a->get(e)->as_table();
+      const std::vector<Leaf> these = leaves(entry);
+      std::map<std::string, const toml::node*> by_key;
+      for (const Leaf& l : these)
+        by_key[l.key] = l.node;
+      const bool same_keys = these.size() == first.size() &&
+                             std::all_of(first.begin(), first.end(),
+                                         [&](const Leaf& l) { return by_key.count(l.key); });
+      if (!same_keys)
+        SG_THROW(file.string() << ":" << line_of(entry) << ": [[list]] entry " << e
+                               << ": every entry must set the same keys as the first one");
+      for (Varied& v : varied)
+        v.values.push_back(by_key.at(v.key));
+    }
+  }
+  if (const toml::node* n = doc.get("grid")) {
+    const auto* t = n->as_table();
+    if (!t) fail(file, line_of(*n), "grid", "", "expected a [grid] table of key = [values]");
+    for (const Leaf& l : leaves(*t)) {
+      const auto* values = l.node->as_array();
+      if (!values || values->empty())
+        fail(file, line_of(*l.node), l.key, " in [grid]",
+             "expected a non-empty array of values, got " + toml_text(*l.node));
+      Varied v{l.key, " in [grid]", line_of(*l.node), {}};
+      for (const auto& value : *values)
+        v.values.push_back(&value);
+      varied.push_back(std::move(v));
+    }
+  }
+  if (varied.empty()) SG_THROW(file.string() << ": no [grid] and no [[list]]: nothing to vary");
+  for (std::size_t i = 0; i < varied.size(); ++i) {
+    const std::string& key = varied[i].key;
+    if (key == "name" || key == "output.directory" || key == "output")
+      fail(file, varied[i].line, key, varied[i].where,
+           "set by softgrain sweep for every run (the run id, the campaign's runs/ folder)");
+    for (std::size_t j = 0; j < varied.size(); ++j)
+      if (i != j && (key == varied[j].key || varied[j].key.rfind(key + ".", 0) == 0))
+        fail(file, varied[j].line, varied[j].key, varied[j].where,
+             "also varied as '" + key + "' (line " + std::to_string(varied[i].line) + ")");
+  }
+
+  // --- The base scenario: every key must exist there, with a value of the same type.
+  ScenarioBase base;
+  base.file = c.scenario;
+  {
+    std::ifstream in(c.scenario, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    base.text = text.str();
+  }
+  try {
+    base.table = toml::parse(base.text, c.scenario.string());
+  } catch (const toml::parse_error& e) {
+    SG_THROW(c.scenario.string() << ":" << e.source().begin.line << ":" << e.source().begin.column
+                                 << ": TOML syntax error: " << e.description());
+  }
+  std::vector<std::vector<std::string>> texts(varied.size()), shown(varied.size());
+  for (std::size_t p = 0; p < varied.size(); ++p) {
+    const Varied& v = varied[p];
+    const Resolved r = resolve(base.table, v.key);
+    if (!r.node)
+      fail(file, v.line, v.key, v.where,
+           "the base scenario '" + c.scenario.string() + "' " + r.error +
+               (r.error.rfind("has no", 0) == 0
+                    ? " (to vary a key, the base scenario must set it, e.g. to its default)"
+                    : ""));
+    if (r.node->is_table() || (r.node->is_array() && r.node->as_array()->is_array_of_tables()))
+      fail(file, v.line, v.key, v.where,
+           "is " + std::string(r.node->is_table() ? "a table" : "an array of tables") +
+               " in the base scenario; vary the keys inside it, e.g. '" + v.key +
+               (r.node->is_table() ? ".<key>'" : ".0.<key>'"));
+    for (const toml::node* value : v.values) {
+      texts[p].push_back(replacement_text(*r.node, *value, [&](const std::string& message) {
+        fail(file, line_of(*value), v.key, v.where, message);
+      }));
+      shown[p].push_back(file_safe(display_text(*value)));
+    }
+    c.parameters.push_back({v.key, "", v.line});
+  }
+  assign_labels(c.parameters);
+
+  // --- The runs: each [[list]] entry times the [grid] product, the first grid key slowest.
+  std::size_t grid_runs = 1;
+  for (const Varied& v : varied)
+    if (v.where == " in [grid]") grid_runs *= v.values.size();
+  const std::size_t total = list_runs * grid_runs;
+  SG_VERIFY(total <= 100000, file.string()
+                                 << ": " << total << " runs: more than 100000, surely a mistake");
+  const std::size_t width = std::max<std::size_t>(3, std::to_string(total - 1).size());
+  for (std::size_t index = 0; index < total; ++index) {
+    CampaignRun run;
+    run.index = index;
+    std::string digits = std::to_string(index);
+    run.id = "run-" + std::string(width - digits.size(), '0') + digits;
+    std::size_t rest = index % grid_runs;
+    std::vector<std::size_t> choice(varied.size());
+    for (std::size_t p = varied.size(); p-- > 0;) {
+      if (varied[p].where == " in [grid]") {
+        choice[p] = rest % varied[p].values.size();
+        rest /= varied[p].values.size();
+      } else {
+        choice[p] = index / grid_runs;
+      }
+    }
+    for (std::size_t p = 0; p < varied.size(); ++p) {
+      run.values.push_back(texts[p][choice[p]]);
+      run.id += "_" + c.parameters[p].label + "=" + shown[p][choice[p]];
+    }
+    c.runs.push_back(std::move(run));
+  }
+  for (CampaignRun& run : c.runs)
+    run.scenario_text = patch_scenario(base, c, run);
+  return c;
+}
+
+}  // namespace sg

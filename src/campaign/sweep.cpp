@@ -1,0 +1,379 @@
+#include "campaign/sweep.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <thread>
+
+#include "campaign/campaign_table.h"
+#include "campaign/run_queue.h"
+#include "core/error.h"
+#include "io/atomic_file.h"
+#include "scenario/scenario.h"
+
+#ifndef SOFTGRAIN_PLOT_CAMPAIGN_SCRIPT
+#define SOFTGRAIN_PLOT_CAMPAIGN_SCRIPT "scripts/plot_campaign.py"
+#endif
+
+namespace sg {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kFailedMarker = "sweep.failed";
+constexpr const char* kSummary = "analysis/summary.json";
+constexpr const char* kPython = "/usr/bin/python3";  // Debian's, with numpy and matplotlib
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// POSIX shell single quotes: safe for any path.
+std::string shell_quoted(const std::string& s) {
+  std::string out = "'";
+  for (char c : s)
+    out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+std::string format_seconds(double s) {
+  std::ostringstream out;
+  if (s < 120)
+    out << static_cast<long>(std::lround(s)) << " s";
+  else if (s < 7200)
+    out << std::fixed << std::setprecision(1) << s / 60 << " min";
+  else
+    out << std::fixed << std::setprecision(1) << s / 3600 << " h";
+  return out.str();
+}
+
+std::string format_mu(const CampaignRow& row) {
+  const double mu = row_quantity(row, "mu");
+  if (!std::isfinite(mu)) return "mu = -";
+  std::ostringstream out;
+  out << "mu = " << std::setprecision(3) << mu;
+  return out.str();
+}
+
+enum class RunState { done, failed, pending };
+
+RunState run_state(const fs::path& dir) {
+  if (fs::exists(dir / kSummary)) return RunState::done;
+  if (fs::exists(dir / kFailedMarker)) return RunState::failed;
+  return RunState::pending;
+}
+
+const char* state_name(RunState s) {
+  switch (s) {
+    case RunState::done:
+      return "done";
+    case RunState::failed:
+      return "failed";
+    default:
+      return "pending";
+  }
+}
+
+CampaignRow make_row(const CampaignRun& run, const fs::path& dir, RunState state) {
+  CampaignRow row{run.id, run.values, state_name(state), {}};
+  if (state == RunState::done) row.quantities = read_summary_quantities(dir / kSummary);
+  return row;
+}
+
+// Writes each run's scenario.toml, refusing to mix runs of a campaign that changed since its
+// folders were written (the same id would then name two different simulations).
+void write_run_scenarios(const CampaignDef& campaign, const fs::path& folder) {
+  for (const CampaignRun& run : campaign.runs) {
+    const fs::path file = campaign_run_folder(folder, run) / "scenario.toml";
+    // Results exist once the folder holds more than the scenario (a run was started).
+    const auto started = [&] {
+      for (const auto& entry : fs::directory_iterator(file.parent_path()))
+        if (entry.path().filename() != "scenario.toml") return true;
+      return false;
+    };
+    if (fs::exists(file) && read_text(file) != run.scenario_text && started()) {
+      SG_THROW(campaign.file.string()
+               << ": run " << run.id << ": '" << file.string()
+               << "' differs from what the campaign now gives (the campaign file or its "
+                  "base scenario changed since the run folders were written); give the "
+                  "campaign another name, or delete '"
+               << folder.string() << "' to start over");
+    }
+    if (!fs::exists(file) || read_text(file) != run.scenario_text)
+      write_file_atomically(file, run.scenario_text);
+  }
+  // Every run's scenario must read: an out-of-range value (say young = -1) is reported now,
+  // naming the run's file and key, not after the other runs have taken hours.
+  for (const CampaignRun& run : campaign.runs) {
+    try {
+      load_scenario(campaign_run_folder(folder, run) / "scenario.toml");
+    } catch (const Error& e) {
+      SG_THROW(campaign.file.string() << ": run " << run.id << ": " << e.what());
+    }
+  }
+  std::string ids;
+  for (const CampaignRun& run : campaign.runs)
+    ids += run.id + "\n";
+  write_file_atomically(folder / "runs.txt", ids);
+}
+
+void write_slurm_script(const CampaignDef& campaign, const fs::path& folder,
+                        const SweepOptions& options, int threads) {
+  std::string analyze_options;
+  for (const std::string& o : campaign.analyze_options)
+    analyze_options += " " + shell_quoted(o);
+  std::ostringstream s;
+  s << "#!/bin/bash\n"
+    << "# Slurm job array for campaign '" << campaign.name << "' (" << campaign.runs.size()
+    << " runs): array task i runs line i+1 of runs.txt.\n"
+    << "# Written by `softgrain sweep --dry-run`; docs/campaigns.md. Submit it from this folder:\n"
+    << "#   sbatch slurm-array.sh\n"
+    << "# and when the tasks are done, gather the results (campaign.csv, mu_map.png):\n"
+    << "#   softgrain sweep " << fs::absolute(campaign.file).lexically_normal().string()
+    << " --gather\n"
+    << "# A task whose run is finished (analysis/summary.json) does nothing: resubmitting the\n"
+    << "# array redoes only the unfinished runs.\n"
+    << "#SBATCH --job-name=" << campaign.name << "\n"
+    << "#SBATCH --array=0-" << campaign.runs.size() - 1 << "\n"
+    << "#SBATCH --cpus-per-task=" << threads << "\n"
+    << "#SBATCH --output=slurm-%A_%a.out\n"
+    << "set -euo pipefail\n"
+    << "cd \"${SLURM_SUBMIT_DIR:-.}\"\n"
+    << "SOFTGRAIN=\"${SOFTGRAIN:-" << options.executable.string() << "}\"\n"
+    << "threads=\"${SLURM_CPUS_PER_TASK:-" << threads << "}\"\n"
+    << "id=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" runs.txt)\n"
+    << "dir=\"runs/$id\"\n"
+    << "[ -f \"$dir/" << kSummary << "\" ] && exit 0\n";
+  if (options.resume_from_checkpoints)
+    s << "resume=\"\"\n"
+      << "[ -f \"$dir/checkpoint.bin\" ] && [ -f \"$dir/series.csv.partial\" ] && "
+         "resume=\"--resume\"\n"
+      << "\"$SOFTGRAIN\" --threads \"$threads\" run \"$dir/scenario.toml\" -o runs $resume "
+         ">> \"$dir/sweep.log\" 2>&1\n";
+  else
+    s << "\"$SOFTGRAIN\" --threads \"$threads\" run \"$dir/scenario.toml\" -o runs "
+         ">> \"$dir/sweep.log\" 2>&1\n";
+  s << "\"$SOFTGRAIN\" --threads \"$threads\" analyze \"$dir\"" << analyze_options
+    << " >> \"$dir/sweep.log\" 2>&1\n";
+  write_file_atomically(folder / "slurm-array.sh", s.str());
+  fs::permissions(folder / "slurm-array.sh", fs::perms::owner_exec | fs::perms::group_exec,
+                  fs::perm_options::add);
+}
+
+// Draws mu over the first two parameters with scripts/plot_campaign.py, if Debian's python
+// with matplotlib is there; otherwise says how to do it.
+void plot(const fs::path& folder, std::ostream* out) {
+  const fs::path script = SOFTGRAIN_PLOT_CAMPAIGN_SCRIPT;
+  const fs::path table = folder / "campaign.csv", map = folder / "mu_map.png";
+  const std::string command = std::string(kPython) + " " + shell_quoted(script.string()) + " " +
+                              shell_quoted(table.string()) + " -o " + shell_quoted(map.string());
+  const bool available =
+      fs::exists(script) && fs::exists(kPython) &&
+      std::system((std::string(kPython) + " -c 'import matplotlib' >/dev/null 2>&1").c_str()) == 0;
+  if (!available) {
+    if (out)
+      *out << "map: no " << kPython << " with matplotlib here; draw it elsewhere with\n  python3 "
+           << "scripts/plot_campaign.py " << table.string() << " -o " << map.string() << "\n";
+    return;
+  }
+  const fs::path log = folder / "plot.log";
+  const int status = std::system((command + " > " + shell_quoted(log.string()) + " 2>&1").c_str());
+  if (out) {
+    if (status == 0)
+      *out << "map: " << map.string() << "\n";
+    else
+      *out << "map: plot_campaign.py failed (see " << log.string() << "):\n  " << command << "\n";
+  }
+}
+
+}  // namespace
+
+fs::path campaign_run_folder(const fs::path& campaign_folder, const CampaignRun& run) {
+  return campaign_folder / kCampaignRunsFolder / run.id;
+}
+
+SweepResult sweep_campaign(const CampaignDef& campaign, const SweepOptions& options) {
+  std::ostream* out = options.out;
+  const fs::path root = options.output_root.empty() ? campaign.output_root : options.output_root;
+  const fs::path folder = fs::absolute(root / campaign.name).lexically_normal();
+  const int parallel = options.parallel > 0 ? options.parallel : campaign.parallel;
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int threads = options.threads > 0    ? options.threads
+                      : campaign.threads > 0 ? campaign.threads
+                                             : std::max(1, cores / parallel);
+
+  fs::create_directories(folder);
+  write_file_atomically(folder / "campaign.toml", read_text(campaign.file));
+  write_run_scenarios(campaign, folder);
+
+  SweepResult result;
+  result.folder = folder;
+  result.table = folder / "campaign.csv";
+  result.runs = campaign.runs.size();
+  std::vector<std::string> keys;
+  for (const CampaignParameter& p : campaign.parameters)
+    keys.push_back(p.key);
+  std::vector<CampaignRow> rows;
+  std::vector<RunState> states;
+  for (const CampaignRun& run : campaign.runs) {
+    const fs::path dir = campaign_run_folder(folder, run);
+    states.push_back(run_state(dir));
+    rows.push_back(make_row(run, dir, states.back()));
+  }
+  const auto count = [&](RunState s) {
+    return static_cast<std::size_t>(std::count(states.begin(), states.end(), s));
+  };
+
+  if (options.mode == SweepOptions::Mode::dry_run) {
+    write_slurm_script(campaign, folder, options, threads);
+    if (out) {
+      *out << "campaign '" << campaign.name << "': " << campaign.runs.size()
+           << (campaign.runs.size() == 1 ? " run in " : " runs in ") << folder.string() << "\n";
+      for (std::size_t i = 0; i < campaign.runs.size(); ++i)
+        *out << "  " << std::left << std::setw(8) << state_name(states[i]) << campaign.runs[i].id
+             << "\n";
+      *out << "written: runs/<id>/scenario.toml, runs.txt, slurm-array.sh (nothing run)\n";
+    }
+    result.done = count(RunState::done);
+    result.failed = count(RunState::failed);
+    result.pending = count(RunState::pending);
+    return result;
+  }
+
+  if (options.mode == SweepOptions::Mode::run) {
+    std::vector<ProcessJob> jobs;
+    std::vector<std::size_t> job_run;  // job -> run index
+    std::vector<bool> job_resumed;
+    const std::string exe = options.executable.string();
+    const std::string thread_count = std::to_string(threads);
+    for (std::size_t i = 0; i < campaign.runs.size(); ++i) {
+      if (states[i] == RunState::done) continue;
+      const CampaignRun& run = campaign.runs[i];
+      const fs::path dir = campaign_run_folder(folder, run);
+      const std::string rel = std::string(kCampaignRunsFolder) + "/" + run.id;
+      fs::remove(dir / kFailedMarker);
+      ProcessJob job;
+      job.working_directory = folder;
+      job.log = dir / "sweep.log";
+      std::vector<std::string> simulate = {
+          exe, "--threads", thread_count, "run", rel + "/scenario.toml", "-o", kCampaignRunsFolder};
+      bool resumed = false;
+      if (fs::exists(dir / "series.csv")) {
+        // The simulation finished, its analysis did not: analyse only.
+      } else if (options.resume_from_checkpoints && fs::exists(dir / "checkpoint.bin") &&
+                 fs::exists(dir / "series.csv.partial")) {
+        simulate.push_back("--resume");
+        job.steps.push_back(simulate);
+        resumed = true;
+      } else {
+        // From scratch: nothing of an interrupted attempt may survive into the new one.
+        std::vector<fs::path> stale;
+        for (const auto& entry : fs::directory_iterator(dir))
+          if (entry.path().filename() != "scenario.toml") stale.push_back(entry.path());
+        for (const fs::path& p : stale)
+          fs::remove_all(p);
+        job.steps.push_back(simulate);
+      }
+      std::vector<std::string> analyze = {exe, "--threads", thread_count, "analyze", rel};
+      analyze.insert(analyze.end(), campaign.analyze_options.begin(),
+                     campaign.analyze_options.end());
+      job.steps.push_back(analyze);
+      jobs.push_back(std::move(job));
+      job_run.push_back(i);
+      job_resumed.push_back(resumed);
+    }
+    if (out) {
+      *out << "campaign '" << campaign.name << "': " << campaign.runs.size()
+           << (campaign.runs.size() == 1 ? " run (" : " runs (") << count(RunState::done)
+           << " done, " << jobs.size() << " to run), " << parallel << " at a time, " << threads
+           << " thread" << (threads > 1 ? "s" : "") << " each -> " << folder.string() << "\n";
+    }
+    write_campaign_table(result.table, keys, rows);
+    const auto progress = [&](std::size_t running) {
+      std::ostringstream s;
+      s << "[" << count(RunState::done) << "/" << campaign.runs.size() << " done";
+      const std::size_t failed = count(RunState::failed);
+      if (failed) s << ", " << failed << " failed";
+      s << ", " << running << " running]";
+      return s.str();
+    };
+    QueueEvents events;
+    events.started = [&](std::size_t job, std::size_t running) {
+      const std::size_t i = job_run[job];
+      states[i] = RunState::pending;
+      if (out)
+        *out << progress(running) << " " << campaign.runs[i].id
+             << (job_resumed[job] ? " resumed from its checkpoint" : " started") << std::endl;
+    };
+    events.finished = [&](const JobOutcome& o, std::size_t running) {
+      const std::size_t i = job_run[o.job];
+      const CampaignRun& run = campaign.runs[i];
+      const fs::path dir = campaign_run_folder(folder, run);
+      std::string message;
+      if (o.success && fs::exists(dir / kSummary)) {
+        states[i] = RunState::done;
+        rows[i] = make_row(run, dir, RunState::done);
+        message = "finished in " + format_seconds(o.seconds) + " (" + format_mu(rows[i]) + ")";
+      } else {
+        states[i] = RunState::failed;
+        rows[i] = make_row(run, dir, RunState::failed);
+        const bool analyze_step = o.step + 1 == jobs[o.job].steps.size();
+        std::ostringstream why;
+        why << "`softgrain " << (analyze_step ? "analyze" : "run") << "` ";
+        if (o.success)
+          why << "wrote no " << kSummary;
+        else if (o.signal)
+          why << "was killed by signal " << o.signal;
+        else
+          why << "exited with status " << o.exit_code;
+        why << " after " << format_seconds(o.seconds) << "; log: " << (dir / "sweep.log").string();
+        if (job_resumed[o.job] && !analyze_step) {
+          // A checkpoint that cannot be resumed would fail the same way every time.
+          fs::remove(dir / "checkpoint.bin");
+          why << " (resuming failed: the next sweep starts it from scratch)";
+        }
+        write_file_atomically(dir / kFailedMarker, why.str() + "\n");
+        message = "FAILED: " + why.str();
+      }
+      write_campaign_table(result.table, keys, rows);
+      if (out) *out << progress(running) << " " << run.id << " " << message << std::endl;
+    };
+    result.interrupted = !run_process_queue(jobs, parallel, events);
+    if (result.interrupted && out)
+      *out << "interrupted: the unfinished runs start again with the next `softgrain sweep "
+           << campaign.file.string() << "`\n";
+  }
+
+  // Gather (again: a --gather after cluster jobs sees runs this process did not start).
+  for (std::size_t i = 0; i < campaign.runs.size(); ++i) {
+    const fs::path dir = campaign_run_folder(folder, campaign.runs[i]);
+    const RunState now = run_state(dir);
+    if (now != states[i]) rows[i] = make_row(campaign.runs[i], dir, now);
+    states[i] = now;
+  }
+  write_campaign_table(result.table, keys, rows);
+  result.done = count(RunState::done);
+  result.failed = count(RunState::failed);
+  result.pending = count(RunState::pending);
+  if (out) {
+    *out << "campaign '" << campaign.name << "': " << result.done << " of " << result.runs
+         << " runs done";
+    if (result.failed) *out << ", " << result.failed << " failed";
+    if (result.pending) *out << ", " << result.pending << " not run";
+    *out << "\ntable: " << result.table.string() << "\n";
+    for (std::size_t i = 0; i < campaign.runs.size(); ++i)
+      if (states[i] == RunState::failed)
+        *out << "  failed: " << campaign.runs[i].id << ": "
+             << read_text(campaign_run_folder(folder, campaign.runs[i]) / kFailedMarker);
+  }
+  if (options.plot && result.done > 0) plot(folder, out);
+  return result;
+}
+
+}  // namespace sg

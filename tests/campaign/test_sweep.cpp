@@ -1,0 +1,170 @@
+// `softgrain sweep` end to end, with the real executable: a 2 x 2 campaign of tiny runs
+// gives a table of 4 rows whose parameters match the runs; a sweep killed (with its runs)
+// after its first run finished and started again does not redo that run and completes.
+#include <gtest/gtest.h>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "scenes/tiny_scenario.h"
+
+namespace sg {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d =
+      fs::temp_directory_path() / ("softgrain_test_sweep_" + std::to_string(::getpid())) / name;
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+// The tiny scene (no shear cell: mu is null in the summaries, which is fine here), short.
+void write_campaign(const fs::path& dir, int parallel) {
+  std::ofstream(dir / "tiny.toml") << std::string(R"(name = "tiny"
+[time]
+duration = 0.05
+[output]
+series_period = 0.005
+field_period = 0.025
+)") + scenes::kTinyScenarioBody;
+  std::ofstream(dir / "campaign.toml") << "name = \"c\"\nscenario = \"tiny.toml\"\n"
+                                       << "output = \"out\"\nparallel = " << parallel << R"(
+threads = 1
+analyze_options = ["--no-agglomerates"]
+[grid]
+"materials.0.young" = [10.0, 20.0]
+"contact_laws.0.friction" = [0.1, 0.4]
+)";
+}
+
+// Starts `softgrain sweep <campaign>` in its own process group, output to `log`.
+pid_t start_sweep(const fs::path& campaign, const fs::path& log) {
+  const std::string exe = SOFTGRAIN_EXECUTABLE, file = campaign.string(), out = log.string();
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::setpgid(0, 0);
+    const int fd = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(fd, 1);
+    ::dup2(fd, 2);
+    ::execl(exe.c_str(), exe.c_str(), "sweep", file.c_str(), "--no-plot",
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  ::setpgid(pid, pid);  // also from here: no race with the kill below
+  return pid;
+}
+
+int wait_exit_code(pid_t pid) {
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<std::vector<std::string>> read_csv(const fs::path& p) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(read(p));
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> cells(1);  // no quoted cells in this campaign's table
+    for (char c : line)
+      if (c == ',')
+        cells.emplace_back();
+      else
+        cells.back() += c;
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+// The runs of the 2 x 2 grid, in order: (young, friction) as written in the table.
+const std::vector<std::pair<std::string, std::string>> kExpected = {
+    {"10.0", "0.1"}, {"10.0", "0.4"}, {"20.0", "0.1"}, {"20.0", "0.4"}};
+
+void expect_complete_table(const fs::path& campaign_folder) {
+  const auto rows = read_csv(campaign_folder / "campaign.csv");
+  ASSERT_EQ(rows.size(), 5u) << "a header and 4 runs";
+  ASSERT_GE(rows[0].size(), 5u);
+  EXPECT_EQ(rows[0][0], "id");
+  EXPECT_EQ(rows[0][1], "materials.0.young");
+  EXPECT_EQ(rows[0][2], "contact_laws.0.friction");
+  EXPECT_EQ(rows[0][3], "status");
+  for (std::size_t r = 0; r < 4; ++r) {
+    const auto& row = rows[r + 1];
+    ASSERT_EQ(row.size(), rows[0].size()) << r;
+    EXPECT_EQ(row[1], kExpected[r].first) << r;
+    EXPECT_EQ(row[2], kExpected[r].second) << r;
+    EXPECT_EQ(row[3], "done") << r;
+    // The row is the run's: its folder holds the scenario with these values.
+    const std::string scenario = read(campaign_folder / "runs" / row[0] / "scenario.toml");
+    EXPECT_NE(scenario.find("young = " + kExpected[r].first), std::string::npos) << row[0];
+    EXPECT_NE(scenario.find("friction = " + kExpected[r].second), std::string::npos) << row[0];
+    EXPECT_TRUE(fs::exists(campaign_folder / "runs" / row[0] / "series.csv")) << row[0];
+  }
+}
+
+TEST(Sweep, TwoByTwoCampaignGivesOneRowPerRun) {
+  const fs::path dir = fresh_dir("grid");
+  write_campaign(dir, 2);
+  const int code = wait_exit_code(start_sweep(dir / "campaign.toml", dir / "sweep.out"));
+  ASSERT_EQ(code, 0) << read(dir / "sweep.out");
+  expect_complete_table(dir / "out" / "c");
+  EXPECT_NE(read(dir / "sweep.out").find("[4/4 done, 0 running]"), std::string::npos)
+      << read(dir / "sweep.out");
+}
+
+TEST(Sweep, KilledSweepResumesWithoutRedoingFinishedRuns) {
+  const fs::path dir = fresh_dir("resume");
+  write_campaign(dir, 1);
+  const fs::path folder = dir / "out" / "c";
+  const fs::path first = folder / "runs" / "run-000_young=10_friction=0.1";
+  const fs::path summary = first / "analysis" / "summary.json";
+
+  const pid_t pid = start_sweep(dir / "campaign.toml", dir / "first.out");
+  const auto deadline = std::chrono::steady_clock::now() + 60s;
+  const auto second_started = [&] {
+    return read(dir / "first.out").find("run-001_young=10_friction=0.4 started") !=
+           std::string::npos;
+  };
+  while (!(fs::exists(summary) && second_started()) && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(10ms);
+  ASSERT_TRUE(fs::exists(summary) && second_started()) << read(dir / "first.out");
+  // The sweep and the run it started next, within ~10 ms of its start: long before that run
+  // and its analysis (~1 s) can finish.
+  ::kill(-pid, SIGKILL);
+  wait_exit_code(pid);
+  const auto summary_time = fs::last_write_time(summary);
+  const std::string first_log = read(first / "sweep.log");
+
+  const int code = wait_exit_code(start_sweep(dir / "campaign.toml", dir / "second.out"));
+  const std::string second = read(dir / "second.out");
+  ASSERT_EQ(code, 0) << second;
+  EXPECT_EQ(fs::last_write_time(summary), summary_time) << "the finished run was redone";
+  EXPECT_EQ(read(first / "sweep.log"), first_log);
+  EXPECT_EQ(second.find("run-000_young=10_friction=0.1 started"), std::string::npos) << second;
+  EXPECT_NE(second.find("run-001_young=10_friction=0.4 finished"), std::string::npos) << second;
+  EXPECT_NE(second.find("run-003_young=20_friction=0.4 finished"), std::string::npos) << second;
+  expect_complete_table(folder);
+}
+
+}  // namespace
+}  // namespace sg
