@@ -263,6 +263,9 @@ struct ScenarioBase {
   fs::path file;
   std::string text;
   toml::table table;
+  // As the campaign names it: the run's text must not depend on the working directory (a
+  // resumed campaign compares it with the run folder's scenario.toml).
+  std::string as_written;
 };
 
 // A TOML basic string; toml++'s printer prefers 'literal' strings, which would stand out in a
@@ -320,7 +323,7 @@ std::string patch_scenario(const ScenarioBase& base, const CampaignDef& campaign
   std::ostringstream header;
   header << "# Run " << run.id << " of campaign '" << campaign.name << "' ("
          << campaign.file.filename().string() << "), written by softgrain sweep: the base\n# "
-         << "scenario " << base.file.string() << " with";
+         << "scenario " << base.as_written << " with";
   for (std::size_t p = 0; p < campaign.parameters.size(); ++p)
     header << (p ? ", " : " ") << campaign.parameters[p].key << " = " << run.values[p];
   header << ".\n";
@@ -546,6 +549,7 @@ CampaignDef load_campaign(const fs::path& file) {
   // --- The base scenario: every key must exist there, with a value of the same type.
   ScenarioBase base;
   base.file = c.scenario;
+  base.as_written = scenario;
   {
     std::ifstream in(c.scenario, std::ios::binary);
     std::ostringstream text;

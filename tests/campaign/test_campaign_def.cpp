@@ -119,6 +119,19 @@ materials.0.name = "soft"
   EXPECT_EQ(c.runs[1].id, "run-001_duration=0.02_name=soft_young=60");
 }
 
+TEST(CampaignDef, RunScenariosDoNotDependOnHowTheCampaignFileIsNamed) {
+  // A campaign resumed from another working directory compares these texts with the
+  // scenario.toml files already written.
+  write("base.toml", kBase);
+  const fs::path file = write("same.toml",
+                              "scenario = \"base.toml\"\n[grid]\n"
+                              "\"materials.0.young\" = [1.0, 2.0]\n");
+  const CampaignDef a = load_campaign(file);
+  const CampaignDef b = load_campaign(file.parent_path() / "." / file.filename());
+  ASSERT_EQ(a.runs.size(), 2u);
+  EXPECT_EQ(a.runs[1].scenario_text, b.runs[1].scenario_text);
+}
+
 TEST(CampaignDef, LabelsTellParametersWithTheSameNameApart) {
   write("base.toml", kBase);
   const CampaignDef c = load_campaign(write("labels.toml", R"(
