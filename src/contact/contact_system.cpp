@@ -139,9 +139,9 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model) {
           model.periodic_x ? nearest_image_shift(broad_phase_.params(), unshifted,
                                                  segment_start_[segment], segment_end_[segment])
                            : 0.0;
-      const NodeProjection p = project_on_contour_segment(
-          unshifted + Vec2(candidate_shift, 0.0), view,
-          candidates[c].segment - master_body.contour_begin);
+      const NodeProjection p =
+          project_on_contour_segment(unshifted + Vec2(candidate_shift, 0.0), view,
+                                     candidates[c].segment - master_body.contour_begin);
       if (is_closer(p, proj)) {
         proj = p;
         shift = candidate_shift;

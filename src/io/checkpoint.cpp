@@ -267,6 +267,8 @@ void describe(A& a, S& s) requires std::is_same_v<std::remove_const_t<S>, StateS
   static_assert(sizeof(SolverPendingIncrements) == 2 * sizeof(double));
   a(s.pending.external_work);
   a(s.pending.damping_dissipation);
+  a(s.pending.load_work);
+  a(s.pending.servo_dissipation);
   a(s.has_contacts);
   a(s.contacts.histories);
   a(s.contacts.previous_positions);

@@ -24,10 +24,11 @@
 #include <vector>
 
 #include "solver/state_snapshot.h"
+#include "solver/step_controller.h"
 
 namespace sg {
 
-inline constexpr std::uint32_t kCheckpointFormatVersion = 1;
+inline constexpr std::uint32_t kCheckpointFormatVersion = 2;
 
 // What identifies the scenario a checkpoint belongs to. The counts make the common mistake
 // explicit in the message; the hashes catch the rest.
@@ -63,6 +64,7 @@ struct RunLoopState {
   double top_force_sum_x = 0.0, top_force_sum_y = 0.0;
   long top_force_rows = 0;
   PvdEntries field_entries, contact_entries;  // fields.pvd and contacts.pvd so far
+  StepControllerState controller;             // the adaptive step (sealed at checkpoints)
 };
 
 template <class Archive, class State>  // State: RunLoopState or const RunLoopState
@@ -79,6 +81,7 @@ void describe(Archive& archive,
   archive(s.top_force_rows);
   archive(s.field_entries);
   archive(s.contact_entries);
+  archive(s.controller);
 }
 
 struct Checkpoint {

@@ -19,6 +19,7 @@
 #include "solver/explicit_solver.h"
 #include "solver/stable_time_step.h"
 #include "solver/state_snapshot.h"
+#include "solver/step_controller.h"
 
 namespace sg {
 
@@ -51,7 +52,8 @@ void write_run_log(const std::filesystem::path& path, const ScenarioDef& s, cons
           << model.bodies[static_cast<std::size_t>(stable.limiting_body)].name << "'), "
           << (stable.damping_limited ? "damping-limited" : "wave-speed-limited")
           << ", dt = " << stable.dt << "\n";
-    out << "# time step used: " << dt << "\n" << resume_note;
+    out << "# first time step: " << dt << " (adaptive: see docs/scenario.md [time])\n"
+        << resume_note;
   });
 }
 
@@ -70,7 +72,8 @@ std::string format_duration(double seconds) {
 // What a checkpoint must match besides the model: settings that change what the steps
 // compute or what the outputs mean.
 std::vector<double> run_settings(const ScenarioDef& s, double dt) {
-  std::vector<double> v = {dt, s.series_period, s.field_period};
+  std::vector<double> v = {dt, s.series_period, s.field_period, s.step_tolerance,
+                           static_cast<double>(s.reestimate_interval)};
   if (!s.contact_laws.empty()) {
     const ContactSettings c = contact_settings(s);
     v.insert(v.end(), {c.cutoff, c.skin});
@@ -143,6 +146,11 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
   const StableStep stable =
       estimate_stable_time_step(model, scenario.time_step_safety, contact_stiffness);
   const double dt = scenario.fixed_time_step > 0.0 ? scenario.fixed_time_step : stable.dt;
+  StepControlParams step_control;
+  step_control.safety = scenario.time_step_safety;
+  step_control.fixed_step = scenario.fixed_time_step;
+  step_control.reestimate_interval = scenario.reestimate_interval;
+  step_control.tolerance = scenario.step_tolerance;
   const double checkpoint_period =
       scenario.checkpoint_period < 0.0 ? scenario.duration / 10.0 : scenario.checkpoint_period;
   // Computed before any restore: the model's fixed data only.
@@ -165,6 +173,8 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
     if (model.bodies[static_cast<std::size_t>(b)].name == "top") top_body = b;
 
   ExplicitSolver solver(model, contacts.get());
+  StepController controller(solver, contacts.get(), step_control);
+  double last_dt = controller.next_step();
   if (contacts) std::filesystem::create_directories(dir / "contacts");
   std::filesystem::create_directories(dir / "grains");
   PvdCollection pvd(dir / "fields.pvd");
@@ -179,6 +189,7 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
     checkpoint = read_checkpoint(checkpoint_path, fingerprint);
     restore_state(checkpoint.state, solver, contacts.get());
     loop = checkpoint.loop;
+    controller.set_state(loop.controller);
     cut_series_back(partial_series, loop);
     series.open(partial_series, std::ios::binary | std::ios::app);
     pvd.restore(loop.field_entries);
@@ -228,7 +239,7 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
   // One row: the ledger describes the state at time t (where the forces were evaluated).
   auto write_series_row = [&](double t, long s) {
     const EnergyLedger& e = solver.state().energy;
-    row << t << ',' << s << ',' << dt << ',' << e.kinetic << ',' << e.elastic << ','
+    row << t << ',' << s << ',' << last_dt << ',' << e.kinetic << ',' << e.elastic << ','
         << e.external_work << ',' << e.damping_dissipated << ',' << e.contact_dissipated << ','
         << e.residual();
     if (top_body >= 0 && t >= 0.5 * scenario.duration) {
@@ -263,6 +274,8 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
     ++loop.next_snapshot;
   };
   auto write_checkpoint_now = [&]() {
+    controller.seal();  // no rollback crosses a checkpoint (resumed = uninterrupted, bitwise)
+    loop.controller = controller.state();
     capture_state(solver, contacts.get(), checkpoint.state);
     loop.field_entries = pvd.entries();
     loop.contact_entries = contact_pvd.entries();
@@ -272,11 +285,11 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
     ++summary.checkpoints_written;
   };
 
-  const long total_steps = static_cast<long>(std::ceil(scenario.duration / dt - 1e-9));
   const double tolerance = 1e-12 * scenario.duration;  // "time reached" despite round-off
   const long first_step = solver.state().step;
+  const double first_time = solver.state().time;
   auto last_progress = clock::now();
-  while (solver.state().step < total_steps) {
+  while (solver.state().time < scenario.duration - tolerance) {
     if (options.stop_after_steps >= 0 &&
         solver.state().step - first_step >= options.stop_after_steps) {
       summary.completed = false;  // as if killed here: no final snapshot, no rename
@@ -288,12 +301,12 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
       write_field();
       loop.next_field_time += scenario.field_period;
     }
-    solver.step(dt);
+    last_dt = controller.advance();
     if (t >= loop.next_series_time - tolerance) {
       write_series_row(t, s);
       loop.next_series_time += scenario.series_period;
     }
-    if (checkpoint_period > 0.0 && solver.state().step < total_steps &&
+    if (checkpoint_period > 0.0 && solver.state().time < scenario.duration - tolerance &&
         solver.state().time >= loop.next_checkpoint_time - tolerance) {
       loop.next_checkpoint_time += checkpoint_period;  // before saving: the saved loop is current
       write_checkpoint_now();
@@ -302,12 +315,13 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
       last_progress = clock::now();
       const double elapsed = std::chrono::duration<double>(last_progress - start).count();
       const double rate = static_cast<double>(s + 1 - first_step) / elapsed;
+      const double time_rate = (solver.state().time - first_time) / elapsed;
       std::ostringstream line;
       line << "\r  t = " << std::setprecision(4) << solver.state().time << " / "
            << scenario.duration << "  (" << std::fixed << std::setprecision(1)
-           << 100.0 * static_cast<double>(s + 1) / static_cast<double>(total_steps) << "%)  "
-           << std::setprecision(0) << rate << " steps/s  ETA "
-           << format_duration(static_cast<double>(total_steps - s - 1) / rate) << "   ";
+           << 100.0 * solver.state().time / scenario.duration << "%)  " << std::setprecision(0)
+           << rate << " steps/s  ETA "
+           << format_duration((scenario.duration - solver.state().time) / time_rate) << "   ";
       *options.progress << line.str() << std::flush;
     }
   }
@@ -321,6 +335,19 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
   summary.directory = dir;
   summary.steps = solver.state().step;
   summary.time_step = dt;
+  {
+    // The step control's record, appended to the run log (rewritten whole, atomically).
+    const StepStatistics& st = controller.statistics();
+    std::ostringstream note;
+    note << resume_note << std::setprecision(6) << "# steps: " << st.accepted << " accepted, "
+         << st.rejected << " rejected; dt in [" << st.dt_min << ", " << st.dt_max << "]; "
+         << st.estimates << " estimates of the critical step (this session)\n";
+    if (!st.last_rejection.empty()) note << "# last rejection: " << st.last_rejection << "\n";
+    write_run_log(dir / "run.log", scenario, model, stable, dt, note.str());
+    if (options.progress && (st.rejected > 0 || st.dt_min != st.dt_max))
+      *options.progress << "\r  step control: " << st.accepted << " steps accepted, " << st.rejected
+                        << " rejected, dt in [" << st.dt_min << ", " << st.dt_max << "]\n";
+  }
   summary.nodes = model.node_count();
   summary.wall_seconds = std::chrono::duration<double>(clock::now() - start).count();
   summary.node_steps_per_second =
@@ -328,7 +355,7 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
   if (options.progress && summary.completed) {
     const EnergyLedger& e = solver.state().energy;
     *options.progress << std::defaultfloat << "\r" << std::string(70, ' ')
-                      << "\rdone: " << total_steps << " steps in "
+                      << "\rdone: " << solver.state().step << " steps in "
                       << format_duration(summary.wall_seconds) << "; outputs in " << dir.string()
                       << "\n  energy: kinetic " << e.kinetic << ", elastic " << e.elastic
                       << ", external work " << e.external_work << ", damping dissipated "

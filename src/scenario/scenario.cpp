@@ -144,11 +144,16 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
   s.source = file;
   s.name = root.string("name", file.stem().string());
   if (auto t = root.table("time")) {
-    t->reject_unknown_keys({"duration", "safety", "fixed_step"});
+    t->reject_unknown_keys(
+        {"duration", "safety", "fixed_step", "reestimate_interval", "step_tolerance"});
     s.duration = t->positive("duration");
     s.time_step_safety = t->positive("safety", 0.8);
     if (s.time_step_safety > 1.0) t->fail("safety", "expected a number in (0, 1]");
     s.fixed_time_step = t->non_negative("fixed_step", 0.0);
+    s.reestimate_interval = t->integer("reestimate_interval", s.reestimate_interval);
+    if (s.reestimate_interval < 0)
+      t->fail("reestimate_interval", "expected a number of steps >= 0 (0: never)");
+    s.step_tolerance = t->non_negative("step_tolerance", s.step_tolerance);
   } else {
     root.fail("time", "required table [time] with 'duration' is missing");
   }

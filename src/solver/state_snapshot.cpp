@@ -13,11 +13,15 @@ struct SolverSnapshotAccess {
     SolverPendingIncrements p;
     p.external_work = s.pending_external_work_;
     p.damping_dissipation = s.pending_damping_dissipation_;
+    p.load_work = s.pending_load_work_;
+    p.servo_dissipation = s.pending_servo_dissipation_;
     return p;
   }
   static void set_pending(ExplicitSolver& s, const SolverPendingIncrements& p) {
     s.pending_external_work_ = p.external_work;
     s.pending_damping_dissipation_ = p.damping_dissipation;
+    s.pending_load_work_ = p.load_work;
+    s.pending_servo_dissipation_ = p.servo_dissipation;
   }
 };
 

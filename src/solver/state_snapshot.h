@@ -32,6 +32,8 @@ namespace sg {
 struct SolverPendingIncrements {
   double external_work = 0.0;
   double damping_dissipation = 0.0;
+  double load_work = 0.0;  // servo-loaded rigid DOFs (DriveMode::load)
+  double servo_dissipation = 0.0;
 };
 
 struct StateSnapshot {

@@ -17,7 +17,7 @@ void validate(const StepControlParams& p) {
             "step control: initial_step must be >= 0, got " << p.initial_step);
   SG_VERIFY(p.reestimate_interval >= 0,
             "step control: reestimate_interval must be >= 0, got " << p.reestimate_interval);
-  SG_VERIFY(p.tolerance > 0.0, "step control: tolerance must be > 0, got " << p.tolerance);
+  SG_VERIFY(p.tolerance >= 0.0, "step control: tolerance must be >= 0, got " << p.tolerance);
   SG_VERIFY(p.max_halvings >= 1, "step control: max_halvings must be >= 1, got " << p.max_halvings);
   SG_VERIFY(p.recovery_steps >= 1,
             "step control: recovery_steps must be >= 1, got " << p.recovery_steps);
@@ -88,7 +88,8 @@ double StepController::advance() {
           std::max(state_.energy_scale,
                    std::abs(e.kinetic) + e.elastic + e.contact_elastic + std::abs(e.external_work));
       const double increment = e.residual() - residual_before;
-      if (std::abs(increment) <= params_.tolerance * state_.energy_scale) {
+      if (params_.tolerance == 0.0 ||
+          std::abs(increment) <= params_.tolerance * state_.energy_scale) {
         ++stats.accepted;
         stats.dt_min = std::min(stats.dt_min, dt);
         stats.dt_max = std::max(stats.dt_max, dt);

@@ -98,6 +98,8 @@ void expect_identical(const StateSnapshot& a, const StateSnapshot& b) {
   EXPECT_EQ(ea.residual(), eb.residual());
   EXPECT_EQ(a.pending.external_work, b.pending.external_work);
   EXPECT_EQ(a.pending.damping_dissipation, b.pending.damping_dissipation);
+  EXPECT_EQ(a.pending.load_work, b.pending.load_work);
+  EXPECT_EQ(a.pending.servo_dissipation, b.pending.servo_dissipation);
   const ContactSystemState &ca = a.contacts, &cb = b.contacts;
   ASSERT_EQ(ca.histories.size(), cb.histories.size());
   for (std::size_t i = 0; i < ca.histories.size(); ++i) {

@@ -65,6 +65,7 @@ TEST(StepController, RejectsUnstableStepsAndRecovers) {
   StepControlParams params;
   params.initial_step = 3.0 * stable;
   params.recovery_steps = 20;
+  params.tolerance = 0.01;
   StepController c(*s.solver, s.contacts.get(), params);
   double t = 0.0;
   while (t < 1.0)
@@ -119,6 +120,7 @@ TEST(StepController, RejectionsAreDeterministicAcrossThreadCounts) {
     Impact s;
     StepControlParams params;
     params.initial_step = 3.0 * stable_step();
+    params.tolerance = 0.01;
     StepController c(*s.solver, s.contacts.get(), params);
     for (int k = 0; k < 200; ++k)
       c.advance();
@@ -136,7 +138,7 @@ TEST(StepController, BadParametersAreRefused) {
   p.safety = 1.5;
   EXPECT_THROW(validate(p), Error);
   p = StepControlParams{};
-  p.tolerance = 0.0;
+  p.tolerance = -1.0;
   EXPECT_THROW(validate(p), Error);
 }
 
