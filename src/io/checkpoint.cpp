@@ -264,7 +264,7 @@ void describe(A& a, S& s) requires std::is_same_v<std::remove_const_t<S>, StateS
     save_ledger(a, s.solver.energy);
   else
     load_ledger(a, s.solver.energy);
-  static_assert(sizeof(SolverPendingIncrements) == 2 * sizeof(double));
+  static_assert(sizeof(SolverPendingIncrements) == 4 * sizeof(double));
   a(s.pending.external_work);
   a(s.pending.damping_dissipation);
   a(s.pending.load_work);
