@@ -28,7 +28,7 @@
 
 namespace sg {
 
-inline constexpr std::uint32_t kCheckpointFormatVersion = 2;
+inline constexpr std::uint32_t kCheckpointFormatVersion = 3;
 
 // What identifies the scenario a checkpoint belongs to. The counts make the common mistake
 // explicit in the message; the hashes catch the rest.
@@ -36,8 +36,9 @@ struct CheckpointFingerprint {
   std::uint64_t nodes = 0, bodies = 0, rigid_bodies = 0, contour_points = 0, gauss_points = 0;
   // FNV-1a 64 of the data fixed at model build: body names, kinds and ranges, materials,
   // reference y and masses of the nodes, Gauss weights, node shape-function values, rigid
-  // masses, inertias and contour offsets, drives, gravity and the periodic cell. (Not the
-  // reference x of the nodes: a body crossing the periodic seam changes it by a period.)
+  // masses, inertias and contour offsets, drives (imposed velocities, forces, servo loads),
+  // gravity and the periodic cell. (Not the reference x of the nodes: a body crossing the
+  // periodic seam changes it by a period.)
   std::uint64_t model_hash = 0;
   // FNV-1a 64 of the run settings the caller passes (time step, output periods, contact
   // laws): another value would make the continued run something the first part was not.
