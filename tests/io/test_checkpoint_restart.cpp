@@ -209,18 +209,34 @@ TEST(CheckpointRestart, StoppedAndResumedRunIsByteIdenticalToAnUninterruptedOne)
             std::string::npos);
 }
 
-TEST(CheckpointRestart, GrainCrossingTheSeamResumesExactly) {
-  // The tiny scene (floor, soft and rigid discs, three laws) made periodic, with two more
-  // soft grains that meet across the seam x = 3 and bond; stopped after the crossing.
-  const ScenarioDef s = scenario_file("seam.toml", std::string(R"(
+// Runs `s` whole, and stopped at `stop` x its steps then resumed; the two folders must
+// match. Returns the resumed run's folder.
+fs::path expect_resume_identical(const ScenarioDef& s, const std::string& tag, double stop) {
+  const RunSummary whole = run(s, temp_root() / (tag + "_whole"));
+  const RunSummary stopped = run(s, temp_root() / (tag + "_resumed"), false,
+                                 static_cast<long>(stop * static_cast<double>(whole.steps)));
+  EXPECT_FALSE(stopped.completed);
+  EXPECT_GE(stopped.checkpoints_written, 2);  // t = 0.05, 0.1, ...
+  const RunSummary resumed = run(s, temp_root() / (tag + "_resumed"), true);
+  EXPECT_GT(resumed.resumed_from_step, 0);
+  EXPECT_TRUE(resumed.completed);
+  EXPECT_EQ(expect_same_files(whole.directory, stopped.directory), 1 + 3 * 5 + 2 + 1);
+  return stopped.directory;
+}
+
+std::string seam_scene(const std::string& time_keys) {
+  return std::string(R"(
 name = "seam"
 [time]
 duration = 0.2
+)") + time_keys +
+         R"(
 [output]
 series_period = 0.002
 field_period = 0.05
 checkpoint_period = 0.05
-)") + scenes::kTinyScenarioBody + R"(
+)" + scenes::kTinyScenarioBody +
+         R"(
 [periodic]
 x_min = -3.0
 x_max = 3.0
@@ -235,17 +251,17 @@ name = "waiting"
 center = [-2.6, -0.1]
 radius = 0.3
 material = "soft"
-)");
-  const RunSummary whole = run(s, temp_root() / "seam_whole");
-  const RunSummary stopped = run(s, temp_root() / "seam_resumed", false, whole.steps * 7 / 10);
-  ASSERT_FALSE(stopped.completed);
-  ASSERT_EQ(stopped.checkpoints_written, 2);  // t = 0.05, 0.1; stopped at t = 0.14
-  const RunSummary resumed = run(s, temp_root() / "seam_resumed", true);
-  EXPECT_GT(resumed.resumed_from_step, whole.steps / 2 - 2);
-  EXPECT_EQ(expect_same_files(whole.directory, stopped.directory), 1 + 3 * 5 + 2 + 1);
+)";
+}
+
+TEST(CheckpointRestart, GrainCrossingTheSeamResumesExactly) {
+  // The tiny scene (floor, soft and rigid discs, three laws) made periodic, with two more
+  // soft grains that meet across the seam x = 3 and bond; stopped after the crossing.
+  const ScenarioDef s = scenario_file("seam.toml", seam_scene(""));
+  const fs::path whole = expect_resume_identical(s, "seam", 0.7);  // identical to the whole run
   // The crossing grain wrapped (its centre went from x = 2.4 moving +x to x < 0), and
   // contacts dissipated or stored energy (the ledger's contact column is not 0).
-  const std::string grains = read_bytes(whole.directory / "grains" / "000004.csv");
+  const std::string grains = read_bytes(whole / "grains" / "000004.csv");
   std::istringstream lines(grains);
   std::string line;
   std::getline(lines, line);  // header
@@ -254,9 +270,24 @@ material = "soft"
     x.push_back(std::stod(line.substr(line.find(',') + 1)));
   ASSERT_EQ(x.size(), 5u);
   EXPECT_LT(x[2], 0.0) << grains;  // bodies: the tiny scene's 2 grains, ours, the floor
-  const std::string series = read_bytes(whole.directory / "series.csv");
+  const std::string series = read_bytes(whole / "series.csv");
   const std::string last = series.substr(series.rfind('\n', series.size() - 2) + 1);
   EXPECT_NE(std::stod(last.substr(nth_comma(last, 7) + 1)), 0.0) << last;
+}
+
+TEST(CheckpointRestart, RunWithRejectedStepsResumesExactly) {
+  // The same scene with the step control's energy check tight enough to reject a step at the
+  // collision (t = 0.112), stopped after it and before the checkpoint at 0.15: the resumed
+  // run starts from the checkpoint at t = 0.1 and repeats the rejection, the retried step
+  // and the smaller steps after it identically.
+  const ScenarioDef s = scenario_file("seam_rejected.toml", seam_scene("step_tolerance = 0.002"));
+  const fs::path resumed = expect_resume_identical(s, "rejected", 0.45);
+  const std::string log = read_bytes(resumed / "run.log");
+  const std::string note = "resumed from checkpoint.bin at step ";
+  ASSERT_NE(log.find(note), std::string::npos) << log;
+  const std::string after = log.substr(log.find(note));
+  EXPECT_LT(std::stod(after.substr(after.find(", time ") + 7)), 0.112) << log;
+  EXPECT_NE(log.find(" 1 rejected"), std::string::npos) << log;
 }
 
 TEST(CheckpointRestart, DamagedCheckpointIsRefusedNamingTheFileAndTheReason) {
