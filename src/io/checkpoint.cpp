@@ -200,7 +200,6 @@ void describe(A& a, S& c) requires std::is_same_v<std::remove_const_t<S>, StepCo
   a(c.dt);
   a(c.stable_dt);
   a(c.energy_scale);
-  a(c.last_residual);
   a(c.since_estimate);
   a(c.since_reduction);
   a(c.statistics);

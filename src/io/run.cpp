@@ -137,20 +137,21 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
 
   Model model = build_model(scenario);
   std::unique_ptr<ContactSystem> contacts;
-  double contact_stiffness = 0.0;
-  if (!scenario.contact_laws.empty()) {
+  if (!scenario.contact_laws.empty())
     contacts = std::make_unique<ContactSystem>(model, contact_law_table(scenario),
                                                contact_settings(scenario));
-    contact_stiffness = contacts->max_stiffness();
-  }
-  const StableStep stable =
-      estimate_stable_time_step(model, scenario.time_step_safety, contact_stiffness);
-  const double dt = scenario.fixed_time_step > 0.0 ? scenario.fixed_time_step : stable.dt;
+  ExplicitSolver solver(model, contacts.get());
   StepControlParams step_control;
   step_control.safety = scenario.time_step_safety;
   step_control.fixed_step = scenario.fixed_time_step;
   step_control.reestimate_interval = scenario.reestimate_interval;
   step_control.tolerance = scenario.step_tolerance;
+  // The controller estimates the critical step of the built (not yet restored) model: the
+  // first step, part of the run settings a checkpoint must match.
+  StepController controller(solver, contacts.get(), step_control);
+  const StableStep stable = controller.last_estimate();
+  const double dt = controller.next_step();
+  double last_dt = dt;
   const double checkpoint_period =
       scenario.checkpoint_period < 0.0 ? scenario.duration / 10.0 : scenario.checkpoint_period;
   // Computed before any restore: the model's fixed data only.
@@ -172,9 +173,6 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
   for (BodyId b : driven)
     if (model.bodies[static_cast<std::size_t>(b)].name == "top") top_body = b;
 
-  ExplicitSolver solver(model, contacts.get());
-  StepController controller(solver, contacts.get(), step_control);
-  double last_dt = controller.next_step();
   if (contacts) std::filesystem::create_directories(dir / "contacts");
   std::filesystem::create_directories(dir / "grains");
   PvdCollection pvd(dir / "fields.pvd");

@@ -64,9 +64,8 @@ struct StepControllerState {
   double dt = 0.0;            // the step the next advance() tries
   double stable_dt = 0.0;     // safety x critical step at the last estimate
   double energy_scale = 0.0;  // largest K + E_elastic + E_contact + |W_ext| seen
-  double last_residual = 0.0;
-  long since_estimate = 0;   // accepted steps since the last estimate
-  long since_reduction = 0;  // accepted steps since dt was last reduced or grown
+  long since_estimate = 0;    // accepted steps since the last estimate
+  long since_reduction = 0;   // accepted steps since dt was last reduced or grown
   StepStatistics statistics;
 };
 
