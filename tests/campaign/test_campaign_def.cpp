@@ -8,12 +8,11 @@
 #include <sstream>
 #include <string>
 
-#include <unistd.h>
-
 #include "campaign/campaign_def.h"
 #include "campaign/campaign_table.h"
 #include "core/error.h"
 #include "scenario/scenario.h"
+#include "scenes/scenario_files.h"
 #include "scenes/tiny_scenario.h"
 
 namespace sg {
@@ -22,14 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path test_dir() {
-  static const fs::path dir = [] {
-    const fs::path d =
-        fs::temp_directory_path() / ("softgrain_test_campaign_" + std::to_string(::getpid()));
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-  }();
-  return dir;
+  return scenes::process_temp_dir("campaign");
 }
 
 fs::path write(const std::string& name, const std::string& text) {

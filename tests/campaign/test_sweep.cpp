@@ -16,6 +16,8 @@
 #include <thread>
 #include <vector>
 
+#include "scenes/scenario_files.h"
+
 #include "scenes/tiny_scenario.h"
 
 namespace sg {
@@ -25,8 +27,7 @@ namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path d =
-      fs::temp_directory_path() / ("softgrain_test_sweep_" + std::to_string(::getpid())) / name;
+  const fs::path d = scenes::process_temp_dir("sweep") / name;
   fs::remove_all(d);
   fs::create_directories(d);
   return d;

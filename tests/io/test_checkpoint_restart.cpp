@@ -3,7 +3,6 @@
 // folder byte-identical to an uninterrupted run's; a damaged checkpoint, or one written for
 // another scenario or other run settings, is refused with one line naming the file and why.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,6 +17,8 @@
 #include "io/checkpoint.h"
 #include "io/run.h"
 #include "scenario/scenario.h"
+#include "scenes/scenario_files.h"
+#include "scenes/shear_cell_scenario.h"
 #include "scenes/tiny_scenario.h"
 
 namespace sg {
@@ -28,71 +29,23 @@ namespace fs = std::filesystem;
 // A small periodic shear cell: rough rigid first bodies, 8 soft cohesive grains, compaction
 // then shear; grains touch, bond and cross the seam within the run.
 std::string shear_cell(const std::string& name, int grains = 8, const std::string& extra = "") {
-  return "name = \"" + name + R"("
-[time]
-duration = 0.6
-)" + extra +
-         R"(
-[output]
-series_period = 0.01
-field_period = 0.1
-checkpoint_period = 0.2
-[discretization]
-node_spacing = 0.25
-[[materials]]
-name = "soft"
-young = 10.0
-poisson = 0.45
-damping = 0.01
-[[materials]]
-name = "first_body"
-young = 1000.0
-[[contact_laws]]
-materials = ["soft", "soft"]
-law = "cohesive"
-normal_stiffness = 2000.0
-cohesion = 0.1
-[[contact_laws]]
-materials = ["soft", "first_body"]
-law = "cohesive"
-normal_stiffness = 2000.0
-cohesion = 0.1
-[[contact_laws]]
-materials = ["first_body", "first_body"]
-law = "frictionless"
-normal_stiffness = 2000.0
-[shear_cell]
-length = 6.0
-grains = )" +
-         std::to_string(grains) +
-         R"(
-diameter = [0.85, 1.15]
-grain_material = "soft"
-first_body_material = "first_body"
-roughness_rms = 0.2
-hurst = 0.8
-compaction_time = 0.15
-velocity = 4.0
-seed = 3
-)";
+  scenes::CohesiveShearCell c;
+  c.name = name;
+  c.duration = 0.6;
+  c.extra_time = extra;
+  c.checkpoint_period = 0.2;
+  c.grains = grains;
+  c.compaction_time = 0.15;
+  c.velocity = 4.0;
+  return scenes::shear_cell_scenario(c);
 }
 
-// One folder per process: ctest runs this binary's tests in parallel processes.
 fs::path temp_root() {
-  static const fs::path root = [] {
-    const fs::path r =
-        fs::temp_directory_path() / ("softgrain_test_io_" + std::to_string(::getpid()));
-    fs::remove_all(r);
-    fs::create_directories(r);
-    return r;
-  }();
-  return root;
+  return scenes::process_temp_dir("io");
 }
 
 ScenarioDef scenario_file(const std::string& file, const std::string& text) {
-  const fs::path path = temp_root() / file;
-  std::ofstream(path) << text;
-  return load_scenario(path);
+  return load_scenario(scenes::write_text_file(temp_root() / file, text));
 }
 
 RunSummary run(const ScenarioDef& s, const fs::path& out, bool resume = false,
@@ -346,8 +299,8 @@ TEST(CheckpointRestart, CheckpointOfAnotherScenarioIsRefused) {
   EXPECT_NE(message.find("checkpoint.bin': written for another model ("), std::string::npos)
       << message;
   // Same sizes, other material: the counts agree, the model hash does not.
-  std::string stiffer = shear_cell("stiffer");
-  stiffer.replace(stiffer.find("young = 10.0"), 12, "young = 12.0");
+  const std::string stiffer =
+      scenes::replace_once(shear_cell("stiffer"), "young = 10.0", "young = 12.0");
   message = resume_other("stiffer.toml", stiffer);
   EXPECT_NE(message.find("written for another model (same sizes"), std::string::npos) << message;
   // Same model, another time step.

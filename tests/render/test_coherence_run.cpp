@@ -16,9 +16,8 @@
 #include "render/plot_runner.h"
 #include "render/snapshot_renderer.h"
 #include "render/vtu_reader.h"
+#include "scenes/scenario_files.h"
 #include "tiny_run.h"
-
-#include <unistd.h>
 
 namespace sg {
 namespace {
@@ -313,9 +312,7 @@ TEST_F(TinyShear, PlotScriptDrawsValidPngs) {
 
 TEST(PlotScript, InstalledLayoutComesFirst) {
   // <prefix>/bin/softgrain finds <prefix>/share/softgrain/plot_run.py before the source tree.
-  const fs::path prefix =
-      fs::temp_directory_path() / ("softgrain_test_install_" + std::to_string(::getpid()));
-  fs::remove_all(prefix);
+  const fs::path prefix = scenes::process_temp_dir("install");
   fs::create_directories(prefix / "bin");
   fs::create_directories(prefix / "share" / "softgrain");
   std::ofstream(prefix / "share" / "softgrain" / "plot_run.py") << "# stand-in\n";

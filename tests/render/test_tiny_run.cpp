@@ -4,11 +4,12 @@
 
 #include "io/run.h"
 #include "scenario/scenario.h"
+#include "scenes/scenario_files.h"
+#include "scenes/shear_cell_scenario.h"
 #include "scenes/tiny_scenario.h"
 #include "tiny_run.h"
 
 #include <omp.h>
-#include <unistd.h>
 
 #include <string>
 
@@ -26,60 +27,23 @@ series_period = 0.002
 field_period = 0.02
 )") + scenes::kTinyScenarioBody;
 
-const std::string kTinyShear = R"(
-name = "tiny-shear"
-[time]
-duration = 4.0
-[output]
-series_period = 0.01
-field_period = 0.1
-[discretization]
-node_spacing = 0.25
-[[materials]]
-name = "soft"
-young = 10.0
-poisson = 0.3
-density = 1.0
-damping = 0.01
-[[materials]]
-name = "first_body"
-young = 1000.0
-density = 1.0
-[[contact_laws]]
-materials = ["soft", "soft"]
-law = "cohesive"
-normal_stiffness = 1000.0
-cohesion = 0.1
-[[contact_laws]]
-materials = ["soft", "first_body"]
-law = "cohesive"
-normal_stiffness = 1000.0
-cohesion = 0.1
-[[contact_laws]]
-materials = ["first_body", "first_body"]
-law = "frictionless"
-normal_stiffness = 1000.0
-[shear_cell]
-length = 8.0
-grains = 20
-diameter = [0.85, 1.15]
-grain_material = "soft"
-first_body_material = "first_body"
-roughness_rms = 0.2
-gap = 2.6
-compaction_time = 1.5
-velocity = 1.0
-seed = 3
-)";
+// 20 soft cohesive grains, L = 8, D = 2.6, V = 1, 4 time units (see tiny_run.h).
+std::string tiny_shear() {
+  scenes::CohesiveShearCell c;
+  c.name = "tiny-shear";
+  c.duration = 4.0;
+  c.poisson = 0.3;
+  c.normal_stiffness = 1000.0;
+  c.length = 8.0;
+  c.grains = 20;
+  c.gap = 2.6;
+  c.compaction_time = 1.5;
+  return scenes::shear_cell_scenario(c);
+}
 
 fs::path simulate(const std::string& tag, const std::string& scenario_text) {
-  // One folder per process: ctest runs the tests of this binary in parallel processes.
-  const fs::path root =
-      fs::temp_directory_path() / ("softgrain_test_" + tag + "_" + std::to_string(::getpid()));
-  fs::remove_all(root);
-  fs::create_directories(root);
-  const fs::path scenario = root / (tag + ".toml");
-  std::ofstream(scenario) << scenario_text;
+  const fs::path root = scenes::process_temp_dir(tag);
+  const fs::path scenario = scenes::write_text_file(root / (tag + ".toml"), scenario_text);
   RunOptions options;
   options.output_root_override = root / "out";
   // One thread: ctest runs test processes side by side on a small machine, and spinning
@@ -91,7 +55,7 @@ fs::path simulate(const std::string& tag, const std::string& scenario_text) {
 }  // namespace
 
 const fs::path& tiny_shear_run_dir() {
-  static const fs::path dir = simulate("render_shear", kTinyShear);
+  static const fs::path dir = simulate("render_shear", tiny_shear());
   return dir;
 }
 

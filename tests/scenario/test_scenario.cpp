@@ -6,12 +6,11 @@
 #include <fstream>
 #include <string>
 
-#include <unistd.h>
-
 #include "core/error.h"
 #include "io/run.h"
 #include "model/model.h"
 #include "scenario/scenario.h"
+#include "scenes/scenario_files.h"
 #include "scenes/tiny_scenario.h"
 
 namespace sg {
@@ -20,12 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path write_temp(const std::string& name, const std::string& text) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("softgrain_test_scenario_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path p = dir / name;
-  std::ofstream(p) << text;
-  return p;
+  return scenes::write_text_file(scenes::process_temp_dir("scenario") / name, text);
 }
 
 const std::string kValid = std::string(R"(
@@ -36,25 +30,12 @@ duration = 0.05
 directory = "OUT"
 )") + scenes::kTinyScenarioBody;
 
-std::string replace(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return text.replace(at, from.size(), to);
-}
-
 std::string error_of(const std::string& text) {
-  const fs::path p = write_temp("bad.toml", text);
-  try {
-    load_scenario(p);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
+  return scenes::scenario_error(scenes::process_temp_dir("scenario"), text);
 }
 
 TEST(Scenario, ValidFileRunsToACompleteFolder) {
-  const fs::path out =
-      fs::temp_directory_path() / ("softgrain_test_scenario_" + std::to_string(::getpid())) / "out";
+  const fs::path out = scenes::process_temp_dir("scenario") / "out";
   fs::remove_all(out);
   const ScenarioDef s = load_scenario(write_temp("tiny.toml", kValid));
   EXPECT_EQ(s.grains.size(), 2u);
@@ -144,7 +125,7 @@ TEST(Scenario, ErrorsNameFileLineAndKey) {
        "key 'discretization.node_spacing': expected a number"},
   };
   for (const Case& c : cases) {
-    const std::string what = error_of(replace(kValid, c.from, c.to));
+    const std::string what = error_of(scenes::replace_once(kValid, c.from, c.to));
     EXPECT_NE(what.find(c.expected), std::string::npos) << "got: " << what;
     EXPECT_NE(what.find("bad.toml"), std::string::npos) << "got: " << what;
   }

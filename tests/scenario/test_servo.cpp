@@ -8,12 +8,11 @@
 #include <fstream>
 #include <string>
 
-#include <unistd.h>
-
 #include "core/error.h"
 #include "geometry/polygon.h"
 #include "geometry/shapes.h"
 #include "scenario/scenario.h"
+#include "scenes/scenario_files.h"
 #include "solver/explicit_solver.h"
 #include "solver/stable_time_step.h"
 
@@ -23,12 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path write_temp(const std::string& name, const std::string& text) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("softgrain_test_servo_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path p = dir / name;
-  std::ofstream(p) << text;
-  return p;
+  return scenes::write_text_file(scenes::process_temp_dir("servo") / name, text);
 }
 
 // A small pressure-loaded cell: 24 soft frictional discs, L = 6, p = 1 (p / E = 0.1),
@@ -80,20 +74,8 @@ velocity = 1.0
 seed = 3
 )";
 
-std::string replace(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  return text.replace(at, from.size(), to);
-}
-
 std::string error_of(const std::string& text) {
-  const fs::path p = write_temp("bad.toml", text);
-  try {
-    load_scenario(p);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
+  return scenes::scenario_error(scenes::process_temp_dir("servo"), text);
 }
 
 std::size_t rigid_index(const Model& model, const std::string& name) {
@@ -185,26 +167,27 @@ TEST(Servo, PressureLoadedShearCellCarriesThePressure) {
 }
 
 TEST(Servo, BadInputNamesFileLineAndKey) {
-  const std::string zero = error_of(replace(kPressureCell, "pressure = 1.0", "pressure = 0.0"));
+  const std::string zero =
+      error_of(scenes::replace_once(kPressureCell, "pressure = 1.0", "pressure = 0.0"));
   EXPECT_NE(zero.find("bad.toml:"), std::string::npos) << zero;
   EXPECT_NE(zero.find("shear_cell.pressure"), std::string::npos) << zero;
   const std::string negative =
-      error_of(replace(kPressureCell, "pressure = 1.0", "pressure = -2.0"));
+      error_of(scenes::replace_once(kPressureCell, "pressure = 1.0", "pressure = -2.0"));
   EXPECT_NE(negative.find("shear_cell.pressure"), std::string::npos) << negative;
-  const std::string missing = error_of(replace(kPressureCell, "pressure = 1.0", ""));
+  const std::string missing = error_of(scenes::replace_once(kPressureCell, "pressure = 1.0", ""));
   EXPECT_NE(missing.find("shear_cell.pressure"), std::string::npos) << missing;
-  const std::string unknown =
-      error_of(replace(kPressureCell, "normal_load = \"pressure\"", "normal_load = \"force\""));
+  const std::string unknown = error_of(
+      scenes::replace_once(kPressureCell, "normal_load = \"pressure\"", "normal_load = \"force\""));
   EXPECT_NE(unknown.find("bad.toml:"), std::string::npos) << unknown;
   EXPECT_NE(unknown.find("shear_cell.normal_load"), std::string::npos) << unknown;
   EXPECT_NE(unknown.find("pressure"), std::string::npos) << unknown;  // lists the choices
   const std::string gap =
-      error_of(replace(kPressureCell, "pressure = 1.0", "pressure = 1.0\ngap = 3.0"));
+      error_of(scenes::replace_once(kPressureCell, "pressure = 1.0", "pressure = 1.0\ngap = 3.0"));
   EXPECT_NE(gap.find("shear_cell.gap"), std::string::npos) << gap;
-  const std::string damping =
-      error_of(replace(kPressureCell, "pressure = 1.0", "pressure = 1.0\nservo_damping = -1.0"));
+  const std::string damping = error_of(scenes::replace_once(
+      kPressureCell, "pressure = 1.0", "pressure = 1.0\nservo_damping = -1.0"));
   EXPECT_NE(damping.find("shear_cell.servo_damping"), std::string::npos) << damping;
-  const std::string pressure_with_gap = error_of(replace(
+  const std::string pressure_with_gap = error_of(scenes::replace_once(
       kPressureCell, "normal_load = \"pressure\"\npressure = 1.0", "gap = 3.0\npressure = 1.0"));
   EXPECT_NE(pressure_with_gap.find("shear_cell.pressure"), std::string::npos) << pressure_with_gap;
   // Line numbers are those of the file: the normal_load line is the 37th.
@@ -282,13 +265,13 @@ TEST(Servo, ShearCellMixesDiscsAndEllipsesByNumberFraction) {
 
   // Sizes given twice, ellipse keys on a disc: errors naming the key.
   const std::string both =
-      error_of(replace(fixed, "grains = 24", "grains = 24\ndiameter = [1, 2]"));
+      error_of(scenes::replace_once(fixed, "grains = 24", "grains = 24\ndiameter = [1, 2]"));
   EXPECT_NE(both.find("shear_cell.diameter"), std::string::npos) << both;
-  const std::string wrong_key = error_of(
-      replace(fixed, "diameter = [0.3, 0.5]", "diameter = [0.3, 0.5]\nmajor_axis = [1, 2]"));
+  const std::string wrong_key = error_of(scenes::replace_once(
+      fixed, "diameter = [0.3, 0.5]", "diameter = [0.3, 0.5]\nmajor_axis = [1, 2]"));
   EXPECT_NE(wrong_key.find("shear_cell.components[0].major_axis"), std::string::npos) << wrong_key;
   const std::string material =
-      error_of(replace(fixed, "material = \"fb\"\nrigid", "material = \"x\"\nrigid"));
+      error_of(scenes::replace_once(fixed, "material = \"fb\"\nrigid", "material = \"x\"\nrigid"));
   EXPECT_NE(material.find("shear_cell.components[0].material"), std::string::npos) << material;
 }
 

@@ -9,12 +9,11 @@
 //
 // The cell: L = 14, 40 soft cohesive grains (E = 10, c = 0.1, alpha = 0.01), fixed gap 3,
 // compaction 3 time units then V = 1 for 9. Measured (2-core x86-64, g++ 12): residual
-// 0.50% of W_ext (it was 9% before the periodic-image and time-centred-release fixes of
-// contact_system.cpp / contact_law.cpp), mu 0.147 and 0.173, normal force 4.80 and 4.40 over t in
+// 0.51% of W_ext (it was 9% before the periodic-image and time-centred-release fixes of
+// contact_system.cpp / contact_law.cpp), mu 0.148 and 0.172, normal force 4.80 and 4.39 over t in
 // [6, 9) and [9, 12).
 #include <gtest/gtest.h>
 #include <omp.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -25,55 +24,28 @@
 
 #include "io/run.h"
 #include "scenario/scenario.h"
+#include "scenes/scenario_files.h"
+#include "scenes/shear_cell_scenario.h"
 
 namespace sg {
 namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kCell = R"(name = "cell"
-[time]
-duration = 12.0
-[output]
-series_period = 0.02
-field_period = 6.0
-[discretization]
-node_spacing = 0.2
-[[materials]]
-name = "soft"
-young = 10.0
-poisson = 0.45
-damping = 0.01
-[[materials]]
-name = "first_body"
-young = 1000.0
-[[contact_laws]]
-materials = ["soft", "soft"]
-law = "cohesive"
-normal_stiffness = 2000.0
-cohesion = 0.1
-[[contact_laws]]
-materials = ["soft", "first_body"]
-law = "cohesive"
-normal_stiffness = 2000.0
-cohesion = 0.1
-[[contact_laws]]
-materials = ["first_body", "first_body"]
-law = "frictionless"
-normal_stiffness = 2000.0
-[shear_cell]
-length = 14.0
-grains = 40
-diameter = [0.85, 1.15]
-grain_material = "soft"
-first_body_material = "first_body"
-roughness_rms = 0.3
-hurst = 0.8
-gap = 3.0
-compaction_time = 3.0
-velocity = 1.0
-seed = 1
-)";
+std::string cell_scenario() {
+  scenes::CohesiveShearCell c;
+  c.duration = 12.0;
+  c.series_period = 0.02;
+  c.field_period = 6.0;
+  c.node_spacing = 0.2;
+  c.length = 14.0;
+  c.grains = 40;
+  c.roughness_rms = 0.3;
+  c.gap = 3.0;
+  c.compaction_time = 3.0;
+  c.seed = 1;
+  return scenes::shear_cell_scenario(c);
+}
 
 struct Series {
   std::vector<std::string> columns;
@@ -88,11 +60,8 @@ struct Series {
 };
 
 Series run_cell(int threads) {
-  const fs::path dir =
-      fs::temp_directory_path() /
-      ("softgrain_test_cell_" + std::to_string(::getpid()) + "_" + std::to_string(threads));
-  fs::create_directories(dir);
-  std::ofstream(dir / "cell.toml") << kCell;
+  const fs::path dir = scenes::process_temp_dir("cell_" + std::to_string(threads));
+  scenes::write_text_file(dir / "cell.toml", cell_scenario());
   omp_set_num_threads(threads);
   RunOptions options;
   options.output_root_override = dir / "out";

@@ -1,0 +1,52 @@
+#pragma once
+// Scenario files for tests: a temp folder per test process, text written to files, and the
+// error a scenario gives (ctest runs a binary's tests as parallel processes, so every
+// process needs a folder of its own).
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "scenario/scenario.h"
+
+namespace sg::scenes {
+
+// <temp>/softgrain_test_<tag>_<pid>, emptied the first time this process asks for it.
+inline std::filesystem::path process_temp_dir(const std::string& tag) {
+  static std::set<std::string> emptied;
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("softgrain_test_" + tag + "_" + std::to_string(::getpid()));
+  if (emptied.insert(tag).second) std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+inline std::filesystem::path write_text_file(const std::filesystem::path& path,
+                                             const std::string& text) {
+  std::ofstream(path, std::ios::trunc) << text;
+  return path;
+}
+
+// `text` with the first occurrence of `from` replaced (a test failure if there is none).
+inline std::string replace_once(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return at == std::string::npos ? text : text.replace(at, from.size(), to);
+}
+
+// The message load_scenario gives for `text` written to <dir>/bad.toml; empty if it loads.
+inline std::string scenario_error(const std::filesystem::path& dir, const std::string& text) {
+  try {
+    load_scenario(write_text_file(dir / "bad.toml", text));
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace sg::scenes
