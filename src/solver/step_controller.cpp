@@ -22,6 +22,8 @@ void validate(const StepControlParams& p) {
   SG_VERIFY(p.recovery_steps >= 1,
             "step control: recovery_steps must be >= 1, got " << p.recovery_steps);
   SG_VERIFY(p.growth > 1.0, "step control: growth must be > 1, got " << p.growth);
+  SG_VERIFY(p.hold_interval >= 1,
+            "step control: hold_interval must be >= 1, got " << p.hold_interval);
 }
 
 StepController::StepController(ExplicitSolver& solver, ContactSystem* contacts,
@@ -64,12 +66,20 @@ double StepController::advance() {
   if (params_.reestimate_interval > 0 && state_.since_estimate >= params_.reestimate_interval)
     estimate();
 
+  // The energy check judges the previous interval, so it needs the state before every step;
+  // a failed step only needs some earlier state, and copying every node array each step
+  // would cost a few percent of the step for a rare event: then a state is held every
+  // hold_interval steps (and whenever none is held).
+  const bool hold_every_step = params_.tolerance > 0.0;
   for (int rejections = 0;; ++rejections) {
-    // Hold the state before this step (the older held state is overwritten).
-    newest_ = 1 - newest_;
-    capture_state(solver_, contacts_, held_state_[newest_]);
-    held_dt_[newest_] = state_.dt;
-    held_ = std::min(held_ + 1, 2);
+    const bool hold_now =
+        hold_every_step || held_ == 0 || solver_.state().step % params_.hold_interval == 0;
+    if (hold_now) {  // the older held state is overwritten
+      newest_ = 1 - newest_;
+      capture_state(solver_, contacts_, held_state_[newest_]);
+      held_dt_[newest_] = state_.dt;
+      held_ = std::min(held_ + 1, 2);
+    }
 
     const double dt = state_.dt;
     const double residual_before = solver_.state().energy.residual();
@@ -106,19 +116,23 @@ double StepController::advance() {
       why = s.str();
     }
 
-    // Reject: roll back to the oldest held state (before the interval the check judged).
-    const int target = held_ == 2 ? 1 - newest_ : newest_;
+    // Reject: roll back to a state from before the interval that went wrong: the older held
+    // state when one was taken at the start of this call, else the newest.
+    const int target = hold_now ? (held_ == 2 ? 1 - newest_ : -1) : newest_;
+    const bool nothing_to_retry = target < 0 && (failed || !hold_every_step);
+    const int shown = target < 0 ? newest_ : target;
     std::ostringstream note;
     note << "t = " << solver_.state().time << ", step " << solver_.state().step
-         << ", dt = " << held_dt_[target] << ": " << why;
-    if (rejections >= params_.max_halvings || (failed && held_ < 2))
-      SG_THROW("step rejected " << rejections + 1 << " times; last: " << note.str()
-                                << (failed && held_ < 2 ? " (no earlier state held to retry from)"
-                                                        : ""));
-    restore_state(held_state_[target], solver_, contacts_);
+         << ", dt = " << held_dt_[shown] << ": " << why;
+    if (rejections >= params_.max_halvings || nothing_to_retry)
+      SG_THROW(
+          "step rejected " << rejections + 1 << " times; last: " << note.str()
+                           << (nothing_to_retry ? " (no earlier state held to retry from)" : ""));
+    const int from = target < 0 ? newest_ : target;  // energy check right after a seal
+    restore_state(held_state_[from], solver_, contacts_);
     // Half the rejected step, and never more than the stable step of the restored state (an
     // estimate older than the event, or a user-given first step, may have been too large).
-    const double rejected_dt = held_dt_[target];
+    const double rejected_dt = held_dt_[from];
     estimate();
     state_.dt = std::min(0.5 * rejected_dt, state_.stable_dt);
     state_.since_reduction = 0;
