@@ -36,14 +36,19 @@ double estimate_max_frequency(const Model& model, BodyId body_id, int iterations
   }
   // Iterate on y = M^-1/2 K M^-1/2 x (symmetric), so the Rayleigh quotient is an eigenvalue bound.
   double lambda = 0.0;
-  const double typical_length = std::sqrt(body.reference_area);
+  // The displacement probe is eps * M^-1/2 x with |x| = 1: scaled so that its largest nodal
+  // component is 1e-7 of the body size (linear regime) whatever the units of the masses (in SI
+  // a node weighs ~1e-16 kg and M^-1/2 alone would move it by light years).
+  double max_inverse_root_mass = 0.0;
+  for (std::size_t i = 0; i < n; ++i)
+    max_inverse_root_mass = std::max(max_inverse_root_mass, std::sqrt(s.inverse_mass[o + i]));
+  const double eps = 1e-7 * std::sqrt(body.reference_area) / max_inverse_root_mass;
   for (int it = 0; it < iterations; ++it) {
     double norm = 0.0;
     for (std::size_t i = 0; i < n; ++i)
       norm += px[i] * px[i] + py[i] * py[i];
     norm = std::sqrt(norm);
     if (norm == 0.0) break;
-    const double eps = 1e-7 * typical_length;  // small against the body: linear regime
     for (std::size_t i = 0; i < n; ++i) {
       px[i] /= norm;
       py[i] /= norm;
@@ -129,27 +134,37 @@ double contact_frequency(const Model& model, const Body& body, double k) {
 
 }  // namespace
 
-StableStep estimate_stable_time_step(const Model& model, double safety, double contact_stiffness) {
-  SG_VERIFY(safety > 0.0 && safety <= 1.0,
-            "time step safety factor " << safety << " must be in (0, 1]");
-  StableStep best;
-  best.dt = std::numeric_limits<double>::infinity();
-  // Bodies are independent: estimate in parallel, pick the minimum in body order.
-  const int count = static_cast<int>(model.bodies.size());
+std::vector<double> estimate_body_frequencies(const Model& model, double contact_stiffness) {
+  // Bodies are independent: estimate in parallel, each into its own slot.
   std::vector<double> omega(model.bodies.size(), 0.0);
-  parallel_for(count, [&](int b) {
+  parallel_for(static_cast<int>(model.bodies.size()), [&](int b) {
     const Body& body = model.bodies[static_cast<std::size_t>(b)];
     const double body_omega =
         body.kind == BodyKind::deformable ? estimate_max_frequency(model, b) : 0.0;
     const double contact_omega = contact_frequency(model, body, contact_stiffness);
     omega[static_cast<std::size_t>(b)] = std::hypot(body_omega, contact_omega);
   });
+  return omega;
+}
+
+double body_damping(const Model& model, BodyId body_id) {
+  const Body& body = model.bodies[static_cast<std::size_t>(body_id)];
+  return body.kind == BodyKind::deformable
+             ? model.materials[static_cast<std::size_t>(body.material)].damping
+             : 0.0;
+}
+
+StableStep estimate_stable_time_step(const Model& model, double safety, double contact_stiffness) {
+  SG_VERIFY(safety > 0.0 && safety <= 1.0,
+            "time step safety factor " << safety << " must be in (0, 1]");
+  StableStep best;
+  best.dt = std::numeric_limits<double>::infinity();
+  // Pick the minimum in body order (deterministic whatever the thread count).
+  const int count = static_cast<int>(model.bodies.size());
+  const std::vector<double> omega = estimate_body_frequencies(model, contact_stiffness);
   for (int b = 0; b < count; ++b) {
-    const Body& body = model.bodies[static_cast<std::size_t>(b)];
     if (omega[static_cast<std::size_t>(b)] <= 0.0) continue;
-    const double alpha = body.kind == BodyKind::deformable
-                             ? model.materials[static_cast<std::size_t>(body.material)].damping
-                             : 0.0;
+    const double alpha = body_damping(model, b);
     const double dt = safety * critical_time_step(omega[static_cast<std::size_t>(b)], alpha);
     if (dt < best.dt) {
       best.dt = dt;

@@ -10,6 +10,8 @@
 // omega_max is measured per body by power iteration on M^-1 K (K the tangent stiffness at
 // the current state, applied by differencing the force kernel): sharper than the bound
 // 2 c_p / h_min, which ignores how far MLS supports reach.
+#include <vector>
+
 #include "model/model.h"
 
 namespace sg {
@@ -23,6 +25,14 @@ double estimate_max_frequency(const Model& model, BodyId body, int iterations = 
 
 // The 2 c_p / h_min bound of a body (h_min: smallest distance between two of its nodes).
 double wave_speed_frequency_bound(const Model& model, BodyId body);
+
+// omega_max of every body, as estimate_stable_time_step combines them: a deformable body's
+// power-iteration frequency with its contour's contact frequency, a rigid body's contact
+// frequency alone (0 without contacts). Deterministic, parallel over bodies.
+std::vector<double> estimate_body_frequencies(const Model& model, double contact_stiffness);
+
+// The stiffness-proportional damping coefficient alpha of a body (0 for rigid bodies).
+double body_damping(const Model& model, BodyId body);
 
 struct StableStep {
   double dt = 0.0;               // safety * min over bodies of the critical step
