@@ -3,6 +3,7 @@
 
 #include "command_registry.h"
 #include "scenario/scenario.h"
+#include "solver/mass_scaling.h"
 #include "solver/stable_time_step.h"
 
 namespace sg::app {
@@ -10,8 +11,20 @@ namespace {
 
 int info(const std::string& file) {
   const ScenarioDef scenario = load_scenario(file);
-  const Model model = build_model(scenario);
-  const StableStep stable = estimate_stable_time_step(model, scenario.time_step_safety);
+  Model model = build_model(scenario);
+  // The same estimate as `run` makes: with the contact penalty and after mass scaling.
+  double contact_stiffness = 0.0;
+  if (!scenario.contact_laws.empty())
+    contact_stiffness =
+        ContactSystem(model, contact_law_table(scenario), contact_settings(scenario))
+            .max_stiffness();
+  std::string mass_scaling;
+  if (scenario.mass_scaling_step > 0.0)
+    mass_scaling = describe(apply_mass_scaling(model, scenario.mass_scaling_step,
+                                               scenario.time_step_safety, contact_stiffness),
+                            model);
+  const StableStep stable =
+      estimate_stable_time_step(model, scenario.time_step_safety, contact_stiffness);
   const double bytes = static_cast<double>(model.node_count()) * 12 * sizeof(double) +
                        static_cast<double>(model.gauss_rows.entries()) * (4 * sizeof(double) + 4) +
                        static_cast<double>(model.node_rows.entries()) * (4 * sizeof(double) + 4);
@@ -29,6 +42,7 @@ int info(const std::string& file) {
               << model.bodies[static_cast<std::size_t>(stable.limiting_body)].name << "')\n"
               << "  steps:         " << static_cast<long>(scenario.duration / stable.dt) << " for "
               << scenario.duration << " time units\n";
+  if (!mass_scaling.empty()) std::cout << "  " << mass_scaling << "\n";
   std::cout << "  memory:        " << bytes / 1048576.0 << " MiB (node state and shape rows)\n";
   return 0;
 }

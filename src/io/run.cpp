@@ -17,6 +17,7 @@
 #include "io/grain_snapshot_writer.h"
 #include "io/vtk_writer.h"
 #include "solver/explicit_solver.h"
+#include "solver/mass_scaling.h"
 #include "solver/stable_time_step.h"
 #include "solver/state_snapshot.h"
 #include "solver/step_controller.h"
@@ -26,12 +27,14 @@ namespace sg {
 namespace {
 
 void write_run_log(const std::filesystem::path& path, const ScenarioDef& s, const Model& model,
-                   const StableStep& stable, double dt, const std::string& resume_note) {
+                   const StableStep& stable, double dt, const std::string& mass_scaling_note,
+                   const std::string& resume_note) {
   write_file_atomically(path, [&](std::ostream& out) {
     out << std::setprecision(10);
     out << "softgrain run log\nscenario = " << s.source.string() << "\nname = " << s.name
         << "\nthreads = " << omp_get_max_threads() << "\n\n[time]\nduration = " << s.duration
         << "\nsafety = " << s.time_step_safety << "\nfixed_step = " << s.fixed_time_step
+        << "\nmass_scaling_step = " << s.mass_scaling_step
         << "\n\n[output]\nseries_period = " << s.series_period
         << "\nfield_period = " << s.field_period << "\ncheckpoint_period = " << s.checkpoint_period
         << "\n\n[discretization]\nnode_spacing = " << s.discretization.mesh.spacing
@@ -52,7 +55,8 @@ void write_run_log(const std::filesystem::path& path, const ScenarioDef& s, cons
           << model.bodies[static_cast<std::size_t>(stable.limiting_body)].name << "'), "
           << (stable.damping_limited ? "damping-limited" : "wave-speed-limited")
           << ", dt = " << stable.dt << "\n";
-    out << "# first time step: " << dt << " (adaptive: see docs/scenario.md [time])\n"
+    out << mass_scaling_note << "# first time step: " << dt
+        << " (adaptive: see docs/scenario.md [time])\n"
         << resume_note;
   });
 }
@@ -72,8 +76,12 @@ std::string format_duration(double seconds) {
 // What a checkpoint must match besides the model: settings that change what the steps
 // compute or what the outputs mean.
 std::vector<double> run_settings(const ScenarioDef& s, double dt) {
-  std::vector<double> v = {dt, s.series_period, s.field_period, s.step_tolerance,
-                           static_cast<double>(s.reestimate_interval)};
+  std::vector<double> v = {dt,
+                           s.series_period,
+                           s.field_period,
+                           s.step_tolerance,
+                           static_cast<double>(s.reestimate_interval),
+                           s.mass_scaling_step};
   if (!s.contact_laws.empty()) {
     const ContactSettings c = contact_settings(s);
     v.insert(v.end(), {c.cutoff, c.skin});
@@ -140,6 +148,15 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
   if (!scenario.contact_laws.empty())
     contacts = std::make_unique<ContactSystem>(model, contact_law_table(scenario),
                                                contact_settings(scenario));
+  // Mass scaling on the built model, before anything is estimated or restored: deterministic,
+  // so a resumed run rebuilds the same masses (and the checkpoint fingerprint checks them).
+  std::string mass_scaling_note;
+  if (scenario.mass_scaling_step > 0.0) {
+    const MassScalingReport report =
+        apply_mass_scaling(model, scenario.mass_scaling_step, scenario.time_step_safety,
+                           contacts ? contacts->max_stiffness() : 0.0);
+    mass_scaling_note = "# " + describe(report, model) + "\n";
+  }
   ExplicitSolver solver(model, contacts.get());
   StepControlParams step_control;
   step_control.safety = scenario.time_step_safety;
@@ -203,7 +220,9 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
     series.open(partial_series, std::ios::binary | std::ios::trunc);
   }
   SG_VERIFY(series, "cannot write '" << partial_series.string() << "'");
-  write_run_log(dir / "run.log", scenario, model, stable, dt, resume_note);
+  write_run_log(dir / "run.log", scenario, model, stable, dt, mass_scaling_note, resume_note);
+  if (options.progress && !mass_scaling_note.empty())
+    *options.progress << "softgrain: " << mass_scaling_note.substr(2);
   if (options.progress)
     *options.progress << "softgrain: " << model.bodies.size() << " bodies, " << model.node_count()
                       << " nodes, " << model.gauss_point_count() << " Gauss points; dt = " << dt
@@ -341,7 +360,7 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
          << st.rejected << " rejected; dt in [" << st.dt_min << ", " << st.dt_max << "]; "
          << st.estimates << " estimates of the critical step (this session)\n";
     if (!st.last_rejection.empty()) note << "# last rejection: " << st.last_rejection << "\n";
-    write_run_log(dir / "run.log", scenario, model, stable, dt, note.str());
+    write_run_log(dir / "run.log", scenario, model, stable, dt, mass_scaling_note, note.str());
     if (options.progress && (st.rejected > 0 || st.dt_min != st.dt_max))
       *options.progress << "\r  step control: " << st.accepted << " steps accepted, " << st.rejected
                         << " rejected, dt in [" << st.dt_min << ", " << st.dt_max << "]\n";

@@ -131,6 +131,7 @@ BodyId Model::append_rigid(Body body, const std::string& name, const Polygon& po
   rigid.y[r] = reference.y();
   rigid.mass[r] = mass;
   rigid.inertia[r] = inertia;
+  rigid.mass_scale.push_back(1.0);
   rigid.drive.emplace_back();
   bodies.push_back(body);
   return static_cast<BodyId>(bodies.size() - 1);

@@ -46,6 +46,10 @@ struct Body {
   double closing_shift_x = 0.0;  // open contours: the last point joins the first + (this, 0)
   int rigid_index = -1;          // index into Model::rigid (rigid bodies)
   double reference_area = 0.0;
+  // Mass scaling (solver/mass_scaling.h): the body's inertia (nodal masses, or rigid mass and
+  // moment of inertia) is this factor times the physical one; gravity still acts on the
+  // physical mass. 1: not scaled.
+  double mass_scale = 1.0;
 
   int node_count() const { return node_end - node_begin; }
   int boundary_count() const { return boundary_end - node_begin; }
@@ -88,7 +92,8 @@ struct RigidState {
   std::vector<double> x, y, theta;     // centre of mass and orientation (checkpointed)
   std::vector<double> vx, vy, omega;   // velocities (checkpointed)
   std::vector<double> fx, fy, torque;  // forces received this step (contacts, gravity)
-  std::vector<double> mass, inertia;   // from contour and density
+  std::vector<double> mass, inertia;   // from contour and density (times mass_scale)
+  std::vector<double> mass_scale;      // Body::mass_scale of each rigid body (1: not scaled)
   std::vector<RigidDrive> drive;
   std::size_t size() const { return x.size(); }
 };

@@ -144,8 +144,8 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
   s.source = file;
   s.name = root.string("name", file.stem().string());
   if (auto t = root.table("time")) {
-    t->reject_unknown_keys(
-        {"duration", "safety", "fixed_step", "reestimate_interval", "step_tolerance"});
+    t->reject_unknown_keys({"duration", "safety", "fixed_step", "reestimate_interval",
+                            "step_tolerance", "mass_scaling_step"});
     s.duration = t->positive("duration");
     s.time_step_safety = t->positive("safety", 0.8);
     if (s.time_step_safety > 1.0) t->fail("safety", "expected a number in (0, 1]");
@@ -154,6 +154,7 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
     if (s.reestimate_interval < 0)
       t->fail("reestimate_interval", "expected a number of steps >= 0 (0: never)");
     s.step_tolerance = t->non_negative("step_tolerance", s.step_tolerance);
+    s.mass_scaling_step = t->non_negative("mass_scaling_step", 0.0);
   } else {
     root.fail("time", "required table [time] with 'duration' is missing");
   }

@@ -49,11 +49,12 @@ struct ScenarioDef {
   std::filesystem::path source;  // the scenario file
   std::string name;              // run name: outputs go to <output_root>/<name>/
   // [time]
-  double duration = 1.0;          // simulated time
-  double time_step_safety = 0.8;  // fraction of the estimated critical step
-  double fixed_time_step = 0.0;   // > 0: use this step instead of the estimate
+  double duration = 1.0;            // simulated time
+  double time_step_safety = 0.8;    // fraction of the estimated critical step
+  double fixed_time_step = 0.0;     // > 0: use this step instead of the estimate
   long reestimate_interval = 2000;  // accepted steps between critical-step estimates
   double step_tolerance = 0.0;      // |energy residual change| per step / energy scale; 0: off
+  double mass_scaling_step = 0.0;   // > 0: scale masses so that the step reaches this (time)
   // [output]
   std::filesystem::path output_root = "out";
   double series_period = 0.0;  // time between rows of series.csv (0: 1/200 of duration)

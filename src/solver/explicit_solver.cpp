@@ -25,10 +25,12 @@ void ExplicitSolver::step(double dt) {
 #pragma omp parallel for schedule(static)
   for (int b = 0; b < body_count; ++b) {
     const Body& body = model_.bodies[static_cast<std::size_t>(b)];
+    // Gravity acts on the physical mass (mass scaling changes the inertia only).
+    const double bgx = gx / body.mass_scale, bgy = gy / body.mass_scale;
     for (int k = body.node_begin; k < body.node_end; ++k) {
       const auto i = static_cast<std::size_t>(k);
-      n.fx[i] = n.mass[i] * gx;
-      n.fy[i] = n.mass[i] * gy;
+      n.fx[i] = n.mass[i] * bgx;
+      n.fy[i] = n.mass[i] * bgy;
     }
   }
   RigidState& rigid = model_.rigid;
@@ -51,6 +53,7 @@ void ExplicitSolver::step(double dt) {
 #pragma omp parallel for schedule(static)
   for (int b = 0; b < body_count; ++b) {
     const Body& body = model_.bodies[static_cast<std::size_t>(b)];
+    const double bgx = gx / body.mass_scale, bgy = gy / body.mass_scale;
     double kinetic = 0.0, external_power = 0.0, viscous_work = 0.0, finite_probe = 0.0;
     for (int k = body.node_begin; k < body.node_end; ++k) {
       const auto i = static_cast<std::size_t>(k);
@@ -61,7 +64,7 @@ void ExplicitSolver::step(double dt) {
       n.uy[i] += dt * n.vy[i];
       kinetic += 0.5 * n.mass[i] * (vx_old * n.vx[i] + vy_old * n.vy[i]);
       viscous_work += n.viscous_fx[i] * n.vx[i] + n.viscous_fy[i] * n.vy[i];
-      external_power += n.mass[i] * (gx * n.vx[i] + gy * n.vy[i]);
+      external_power += n.mass[i] * (bgx * n.vx[i] + bgy * n.vy[i]);
       finite_probe += 0.0 * (n.ux[i] + n.uy[i] + n.vx[i] + n.vy[i]);
     }
     double* sums = body_sums_.data() + 4 * static_cast<std::size_t>(b);
@@ -122,7 +125,8 @@ std::pair<double, double> ExplicitSolver::advance_rigid_bodies(double dt) {
     double* position[3] = {&r.x[i], &r.y[i], &r.theta[i]};
     const double received[3] = {r.fx[i], r.fy[i], r.torque[i]};
     const double inertia[3] = {r.mass[i], r.mass[i], r.inertia[i]};
-    const double gravity[3] = {r.mass[i] * model_.gravity.x(), r.mass[i] * model_.gravity.y(), 0.0};
+    const double weight = r.mass[i] / r.mass_scale[i];  // physical mass (mass scaling)
+    const double gravity[3] = {weight * model_.gravity.x(), weight * model_.gravity.y(), 0.0};
     for (int d = 0; d < 3; ++d) {
       const double v_old = *velocity[d];
       if (drive.mode[d] == DriveMode::velocity) {
