@@ -245,7 +245,7 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
   };
   if (!options.resume) {
     row << "time,step,dt,kinetic_energy,elastic_energy,external_work,damping_dissipation,"
-           "contact_dissipation,energy_residual";
+           "contact_dissipation,servo_dissipation,energy_residual";
     for (BodyId b : driven) {
       const std::string& name = model.bodies[static_cast<std::size_t>(b)].name;
       row << ',' << name << "_fx," << name << "_fy," << name << "_x," << name << "_y";
@@ -258,7 +258,7 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
     const EnergyLedger& e = solver.state().energy;
     row << t << ',' << s << ',' << last_dt << ',' << e.kinetic << ',' << e.elastic << ','
         << e.external_work << ',' << e.damping_dissipated << ',' << e.contact_dissipated << ','
-        << e.residual();
+        << e.servo_dissipated << ',' << e.residual();
     if (top_body >= 0 && t >= 0.5 * scenario.duration) {
       const auto r =
           static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(top_body)].rigid_index);
