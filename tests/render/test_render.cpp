@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -122,6 +124,40 @@ TEST_F(RenderOnTinyRun, GivenRangeAndLastFrame) {
   o.range.reset();
   o.field = "no_such_field";
   EXPECT_THROW(render_run(run_dir_, o), Error);
+}
+
+// The MP4: one frame per snapshot at the picture size, when ffmpeg is on PATH (the run
+// still succeeds without it, with a note saying why there is no movie).
+TEST_F(RenderOnTinyRun, MovieHasEveryFrameWhenFfmpegIsThere) {
+  RenderOptions o;
+  o.field = "velocity";
+  o.width = 320;
+  o.height = 200;
+  const char* path = std::getenv("PATH");
+  const std::string saved = path ? path : "";
+  ::setenv("PATH", "", 1);  // no ffmpeg to be found
+  const RenderResult without = render_run(run_dir_, o);
+  ::setenv("PATH", saved.c_str(), 1);
+  EXPECT_TRUE(without.movie.empty());
+  EXPECT_NE(without.note.find("ffmpeg not found"), std::string::npos) << without.note;
+  EXPECT_EQ(without.images.size(), read_pvd(run_dir_ / "fields.pvd").size());
+
+  if (std::system("command -v ffmpeg > /dev/null 2>&1 && command -v ffprobe > /dev/null 2>&1"))
+    GTEST_SKIP() << "ffmpeg/ffprobe not installed: the movie itself is not checked";
+  const RenderResult r = render_run(run_dir_, o);
+  ASSERT_FALSE(r.movie.empty()) << r.note;
+  ASSERT_TRUE(fs::exists(r.movie));
+  const std::string probe =
+      "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+      "stream=width,height,nb_read_frames -of csv=p=0 '" +
+      r.movie.string() + "'";
+  FILE* pipe = ::popen(probe.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  char line[256] = {};
+  const bool read = std::fgets(line, sizeof line, pipe) != nullptr;
+  ::pclose(pipe);
+  ASSERT_TRUE(read) << probe;
+  EXPECT_EQ(std::string(line), "320,200," + std::to_string(r.images.size()) + "\n");
 }
 
 TEST_F(RenderOnTinyRun, BodyFieldHasNoRangeAndTheGrainIsDrawn) {
