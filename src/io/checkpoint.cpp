@@ -257,17 +257,19 @@ void describe(A& a, S& s) requires std::is_same_v<std::remove_const_t<S>, StateS
   a(s.rigid_fx);
   a(s.rigid_fy);
   a(s.rigid_torque);
+  a(s.drive_reaction);
   a(s.solver.time);
   a(s.solver.step);
   if constexpr (std::is_const_v<S>)
     save_ledger(a, s.solver.energy);
   else
     load_ledger(a, s.solver.energy);
-  static_assert(sizeof(SolverPendingIncrements) == 4 * sizeof(double));
+  static_assert(sizeof(SolverPendingIncrements) == 5 * sizeof(double));
   a(s.pending.external_work);
   a(s.pending.damping_dissipation);
   a(s.pending.load_work);
   a(s.pending.servo_dissipation);
+  a(s.pending.drive_work);
   a(s.has_contacts);
   a(s.contacts.histories);
   a(s.contacts.previous_positions);
@@ -327,6 +329,15 @@ CheckpointFingerprint fingerprint_of(const Model& model, std::span<const double>
       w(d.load[k].values);
       w(d.load_damping[k]);
     }
+  for (const NodeDrive& d : model.node_drives) {
+    w(d.body);
+    w(d.nodes);
+    for (int k = 0; k < 2; ++k) {
+      w(d.mode[k]);
+      w(d.velocity[k].times);
+      w(d.velocity[k].values);
+    }
+  }
   w(model.gravity);
   w(model.periodic_x);
   w(model.x_min);

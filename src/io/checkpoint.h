@@ -28,7 +28,7 @@
 
 namespace sg {
 
-inline constexpr std::uint32_t kCheckpointFormatVersion = 4;
+inline constexpr std::uint32_t kCheckpointFormatVersion = 5;
 
 // What identifies the scenario a checkpoint belongs to. The counts make the common mistake
 // explicit in the message; the hashes catch the rest.
@@ -36,7 +36,8 @@ struct CheckpointFingerprint {
   std::uint64_t nodes = 0, bodies = 0, rigid_bodies = 0, contour_points = 0, gauss_points = 0;
   // FNV-1a 64 of the data fixed at model build: body names, kinds and ranges, materials,
   // reference y and masses of the nodes, Gauss weights, node shape-function values, rigid
-  // masses, inertias and contour offsets, drives (imposed velocities, forces, servo loads),
+  // masses, inertias and contour offsets, drives (imposed velocities, forces, servo loads;
+  // node drives: nodes and imposed velocities),
   // gravity and the periodic cell. (Not the reference x of the nodes: a body crossing the
   // periodic seam changes it by a period.)
   std::uint64_t model_hash = 0;

@@ -16,6 +16,7 @@
 #include "io/contact_vtk.h"
 #include "io/grain_snapshot_writer.h"
 #include "io/vtk_writer.h"
+#include "model/kinematics.h"
 #include "solver/explicit_solver.h"
 #include "solver/mass_scaling.h"
 #include "solver/stable_time_step.h"
@@ -176,10 +177,17 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
 
   // Driven bodies (rigid bodies with an imposed velocity or force): the force they receive
   // from the granular system and their position.
+  // Deformable first bodies (strips) whose back face is driven (NodeDrive) are driven bodies
+  // too: see driven_force() below.
   std::vector<BodyId> driven;
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
     const Body& body = model.bodies[b];
-    if (body.kind != BodyKind::rigid) continue;
+    if (body.kind != BodyKind::rigid) {
+      if (body.node_drive >= 0 &&
+          model.node_drives[static_cast<std::size_t>(body.node_drive)].drives_any())
+        driven.push_back(static_cast<BodyId>(b));
+      continue;
+    }
     const RigidDrive& d = model.rigid.drive[static_cast<std::size_t>(body.rigid_index)];
     if (d.mode[0] != DriveMode::free || d.mode[1] != DriveMode::free)
       driven.push_back(static_cast<BodyId>(b));
@@ -189,6 +197,36 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
   BodyId top_body = -1;
   for (BodyId b : driven)
     if (model.bodies[static_cast<std::size_t>(b)].name == "top") top_body = b;
+  // The force columns of a driven body, with the rigid bodies' meaning: the force it receives
+  // from the layer. A rigid body: the contact forces it received. A driven strip: minus the
+  // drive's reaction R and minus the strip's weight W, i.e. the force the strip transmits to
+  // its driven back face (what a load cell there measures), which balances the layer's force
+  // on the strip up to the strip's inertia (zero on average in a steady state). Its position
+  // columns: the mean physical position of the back-face nodes.
+  auto driven_force = [&](BodyId b) -> Vec2 {
+    const Body& body = model.bodies[static_cast<std::size_t>(b)];
+    if (body.kind == BodyKind::rigid) {
+      const auto r = static_cast<std::size_t>(body.rigid_index);
+      return Vec2(model.rigid.fx[r], model.rigid.fy[r]);
+    }
+    double mass = 0.0;  // physical mass: gravity acts on it (solver/mass_scaling.h)
+    for (int i = body.node_begin; i < body.node_end; ++i)
+      mass += model.nodes.mass[static_cast<std::size_t>(i)];
+    const Vec2 weight = mass / body.mass_scale * model.gravity;
+    return -model.node_drives[static_cast<std::size_t>(body.node_drive)].reaction - weight;
+  };
+  auto driven_position = [&](BodyId b) -> Vec2 {
+    const Body& body = model.bodies[static_cast<std::size_t>(b)];
+    if (body.kind == BodyKind::rigid) {
+      const auto r = static_cast<std::size_t>(body.rigid_index);
+      return Vec2(model.rigid.x[r], model.rigid.y[r]);
+    }
+    const NodeDrive& d = model.node_drives[static_cast<std::size_t>(body.node_drive)];
+    Vec2 sum(0, 0);
+    for (int i : d.nodes)
+      sum += node_position(model, i);
+    return sum / static_cast<double>(d.nodes.size());
+  };
 
   if (contacts) std::filesystem::create_directories(dir / "contacts");
   std::filesystem::create_directories(dir / "grains");
@@ -260,17 +298,14 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
         << e.external_work << ',' << e.damping_dissipated << ',' << e.contact_dissipated << ','
         << e.servo_dissipated << ',' << e.residual();
     if (top_body >= 0 && t >= 0.5 * scenario.duration) {
-      const auto r =
-          static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(top_body)].rigid_index);
-      loop.top_force_sum_x += model.rigid.fx[r];
-      loop.top_force_sum_y += model.rigid.fy[r];
+      const Vec2 f = driven_force(top_body);
+      loop.top_force_sum_x += f.x();
+      loop.top_force_sum_y += f.y();
       ++loop.top_force_rows;
     }
     for (BodyId b : driven) {
-      const auto r =
-          static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index);
-      row << ',' << model.rigid.fx[r] << ',' << model.rigid.fy[r] << ',' << model.rigid.x[r] << ','
-          << model.rigid.y[r];
+      const Vec2 f = driven_force(b), x = driven_position(b);
+      row << ',' << f.x() << ',' << f.y() << ',' << x.x() << ',' << x.y();
     }
     row << '\n';
     append_series();

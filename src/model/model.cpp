@@ -10,6 +10,7 @@ void NodeState::resize(std::size_t n) {
   for (auto* a : {&ref_x, &ref_y, &ux, &uy, &vx, &vy, &fx, &fy, &viscous_fx, &viscous_fy, &mass,
                   &inverse_mass})
     a->resize(n, 0.0);
+  drive.resize(n, -1);
 }
 
 MaterialId Model::add_material(const MaterialDef& def) {
@@ -64,6 +65,33 @@ BodyId Model::add_deformable_body(const std::string& name, const BodyDiscretizat
     triangles.push_back({t[0] + body.node_begin, t[1] + body.node_begin, t[2] + body.node_begin});
   bodies.push_back(body);
   return static_cast<BodyId>(bodies.size() - 1);
+}
+
+BodyId Model::add_deformable_strip(const std::string& name, const Polygon& surface,
+                                   double closing_shift_x, double back_y, MaterialId material,
+                                   const DiscretizationParams& params) {
+  return add_deformable_strip(
+      name, discretize_periodic_strip(surface, closing_shift_x, back_y, params, name), material);
+}
+
+BodyId Model::add_deformable_strip(const std::string& name,
+                                   const PeriodicStripDiscretization& strip, MaterialId material) {
+  SG_VERIFY(strip.closing_shift_x != 0.0,
+            "body '" << name << "': a strip needs a closing shift (the period)");
+  const BodyId id = add_deformable_body(name, strip.body, material);
+  Body& body = bodies[static_cast<std::size_t>(id)];
+  body.open_contour = true;
+  body.closing_shift_x = strip.closing_shift_x;
+  NodeDrive drive;
+  drive.body = id;
+  for (int local : strip.back_nodes)
+    drive.nodes.push_back(body.node_begin + local);
+  std::sort(drive.nodes.begin(), drive.nodes.end());
+  body.node_drive = static_cast<int>(node_drives.size());
+  for (int i : drive.nodes)
+    nodes.drive[static_cast<std::size_t>(i)] = body.node_drive;
+  node_drives.push_back(std::move(drive));
+  return id;
 }
 
 void Model::check_new_body(const std::string& name, MaterialId material) const {

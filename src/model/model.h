@@ -19,6 +19,7 @@
 #include "geometry/polygon.h"
 #include "material/material.h"
 #include "meshfree/body_discretization.h"
+#include "meshfree/periodic_strip.h"
 #include "meshfree/shape_rows.h"
 
 namespace sg {
@@ -45,6 +46,8 @@ struct Body {
   bool open_contour = false;
   double closing_shift_x = 0.0;  // open contours: the last point joins the first + (this, 0)
   int rigid_index = -1;          // index into Model::rigid (rigid bodies)
+  // Deformable strips: index into Model::node_drives of the drive of its back face (-1: none).
+  int node_drive = -1;
   double reference_area = 0.0;
   // Mass scaling (solver/mass_scaling.h): the body's inertia (nodal masses, or rigid mass and
   // moment of inertia) is this factor times the physical one; gravity still acts on the
@@ -87,6 +90,25 @@ struct RigidDrive {
   double load_damping[3] = {0, 0, 0};  // mode == load: c (force/velocity; torque.time/rad)
 };
 
+// Imposed velocities on field nodes of one deformable body: the back face of a deformable
+// strip (first body), driven as RigidDrive drives a rigid first body. Each component is free
+// or velocity-driven (DriveMode::velocity, piecewise linear in time); the velocity
+// *parameters* of the nodes are imposed (MLS does not interpolate: the physical velocity at
+// the back face follows through the rows). The solver measures the reaction the drive applies
+// and books its work (solver/explicit_solver.h).
+struct NodeDrive {
+  BodyId body = -1;
+  std::vector<int> nodes;  // global node indices, all in `body`, increasing
+  DriveMode mode[2] = {DriveMode::free, DriveMode::free};  // x, y: free or velocity
+  PiecewiseLinear velocity[2];                             // mode == velocity (length/time)
+  // Recomputed at every step (like RigidState::fx): the total force the drive applied to its
+  // nodes at the last force evaluation, R = sum_I (m_I (v_n+1/2 - v_n-1/2) / dt - f_I).
+  Vec2 reaction = Vec2::Zero();
+  bool drives_any() const {
+    return mode[0] == DriveMode::velocity || mode[1] == DriveMode::velocity;
+  }
+};
+
 // Rigid bodies: a few scalars each (structure of arrays, one entry per rigid body).
 struct RigidState {
   std::vector<double> x, y, theta;     // centre of mass and orientation (checkpointed)
@@ -108,6 +130,9 @@ struct NodeState {
   std::vector<double> viscous_fx, viscous_fy;  // its bulk-damping part (energy bookkeeping)
   std::vector<double> mass;                    // lumped mass rho * integral of N_I
   std::vector<double> inverse_mass;
+  // Index into Model::node_drives of the drive that owns the node, or -1 (cold: read in the
+  // update loop as a rarely taken branch).
+  std::vector<int> drive;
 
   std::size_t size() const { return ref_x.size(); }
   void resize(std::size_t n);
@@ -127,6 +152,7 @@ struct Model {
   std::vector<Vec2> rigid_contour_offset;
   std::vector<BodyId> contour_body;  // owner of each contour point
   RigidState rigid;
+  std::vector<NodeDrive> node_drives;
   Vec2 gravity = Vec2::Zero();  // acceleration (length / time^2)
   // Periodic boundary in x over [x_min, x_max) when periodic_x is set.
   bool periodic_x = false;
@@ -151,6 +177,16 @@ struct Model {
   // normally driven), its reference point is the mean of the surface points.
   BodyId add_rigid_strip(const std::string& name, const Polygon& surface, MaterialId material,
                          double closing_shift_x, double mass, double inertia);
+
+  // A deformable periodic strip (first body): discretized by discretize_periodic_strip
+  // (meshfree/periodic_strip.h) between the rough `surface` and a flat back face at y =
+  // back_y. Its contour is the surface only, open, closed across the seam by closing_shift_x,
+  // as for add_rigid_strip; the back-face nodes get a NodeDrive (free until its modes are set).
+  BodyId add_deformable_strip(const std::string& name, const Polygon& surface,
+                              double closing_shift_x, double back_y, MaterialId material,
+                              const DiscretizationParams& params);
+  BodyId add_deformable_strip(const std::string& name, const PeriodicStripDiscretization& strip,
+                              MaterialId material);
 
   std::size_t node_count() const { return nodes.size(); }
 

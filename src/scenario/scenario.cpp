@@ -199,7 +199,7 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
     t->reject_unknown_keys({"length", "grains", "diameter", "grain_material", "first_body_material",
                             "roughness_rms", "hurst", "first_body_thickness", "gap",
                             "compaction_time", "velocity", "seed", "normal_load", "pressure",
-                            "servo_damping", "components"});
+                            "servo_damping", "components", "first_bodies"});
     ShearCellDef c;
     c.length = t->positive("length", c.length);
     c.grains = static_cast<int>(t->integer("grains", c.grains));
@@ -221,6 +221,13 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
     c.normal_load = t->one_of("normal_load", {"gap", "pressure"}, "gap") == "gap"
                         ? NormalLoad::gap
                         : NormalLoad::pressure;
+    c.first_bodies = t->one_of("first_bodies", {"rigid", "deformable"}, "rigid") == "rigid"
+                         ? FirstBodyKind::rigid
+                         : FirstBodyKind::deformable;
+    if (c.normal_load == NormalLoad::pressure && c.first_bodies == FirstBodyKind::deformable)
+      t->fail("normal_load",
+              "\"pressure\" is not supported with first_bodies = \"deformable\" "
+              "yet (use \"gap\")");
     if (c.normal_load == NormalLoad::pressure) {
       c.pressure = t->positive("pressure");
       c.servo_damping = t->non_negative("servo_damping", 0.0);

@@ -40,6 +40,22 @@ MaterialId material_by_name(const Model& model, const std::string& name) {
   SG_THROW("shear cell: unknown grain material '" << name << "'");
 }
 
+// The grains, after the two first bodies ("bottom", "top", then "grain_<i>").
+void add_grains(Model& model, const std::vector<GrainDef>& grains, const PackingResult& packed,
+                const MixtureDef& mixture, MaterialId grain_material,
+                const DiscretizationParams& params) {
+  for (std::size_t i = 0; i < grains.size(); ++i) {
+    const std::string& name =
+        mixture.components[static_cast<std::size_t>(grains[i].component)].material;
+    const MaterialId material = name.empty() ? grain_material : material_by_name(model, name);
+    const std::string body_name = "grain_" + std::to_string(i);
+    if (grains[i].rigid)
+      model.add_rigid_body(body_name, packed.contours[i], material);
+    else
+      model.add_deformable_body(body_name, packed.contours[i], material, params);
+  }
+}
+
 }  // namespace
 
 double shear_cell_grain_size(const ShearCellDef& def) {
@@ -77,6 +93,9 @@ ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId g
   SG_VERIFY(def.compaction_time > 0.0, "shear cell: compaction_time must be positive");
   SG_VERIFY(def.normal_load == NormalLoad::gap || def.pressure > 0.0,
             "shear cell: pressure loading needs a positive pressure, got " << def.pressure);
+  SG_VERIFY(def.first_bodies == FirstBodyKind::rigid || def.normal_load == NormalLoad::gap,
+            "shear cell: deformable first bodies support gap loading only (normal_load = "
+            "\"pressure\" needs a servo on a driven boundary, not implemented)");
   SG_VERIFY(def.servo_damping >= 0.0,
             "shear cell: servo_damping must be >= 0, got " << def.servo_damping);
   const double h = params.mesh.spacing;
@@ -140,11 +159,44 @@ ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId g
     top.emplace_back(static_cast<double>(j) * top_profile.spacing(),
                      info.top_mean_y + top_profile.heights[j]);
   }
+  const double closing_speed = (packed_height - info.gap) / def.compaction_time;
+  if (def.first_bodies == FirstBodyKind::deformable) {
+    // Strips from the mean surface to a flat back face at the thickness; the back faces are
+    // driven as the rigid bodies below (their reactions are the forces in series.csv).
+    const double bottom_valley =
+        *std::min_element(bottom_profile.heights.begin(), bottom_profile.heights.end());
+    const double top_peak =
+        *std::max_element(top_profile.heights.begin(), top_profile.heights.end());
+    SG_VERIFY(def.first_body_thickness > std::max(-bottom_valley, top_peak),
+              "shear cell: first_body_thickness " << def.first_body_thickness
+                                                  << " must exceed the deepest valley / highest "
+                                                     "peak of the rough surfaces ("
+                                                  << std::max(-bottom_valley, top_peak) << ")");
+    const BodyId ids[2] = {
+        model.add_deformable_strip("bottom", bottom, -period,
+                                   info.bottom_mean_y - def.first_body_thickness,
+                                   first_body_material, params),
+        model.add_deformable_strip("top", top, period, info.top_mean_y + def.first_body_thickness,
+                                   first_body_material, params)};
+    for (BodyId b : ids) {
+      NodeDrive& d = model.node_drives[static_cast<std::size_t>(
+          model.bodies[static_cast<std::size_t>(b)].node_drive)];
+      const bool is_top = b == ids[1];
+      d.mode[0] = d.mode[1] = DriveMode::velocity;
+      d.velocity[0] = switch_at(def.compaction_time, 0.0, (is_top ? 0.5 : -0.5) * def.velocity);
+      d.velocity[1] = is_top ? switch_at(def.compaction_time, -closing_speed, 0.0)
+                             : PiecewiseLinear::constant(0.0);
+      // The whole strip starts at its back face's velocity (a rigid strip would): no wave
+      // sent through it by a back face set in motion alone at t = 0.
+      set_rigid_velocity(model, b, Vec2(d.velocity[0](0.0), d.velocity[1](0.0)), 0.0);
+    }
+    add_grains(model, grains, packed, mixture, grain_material, params);
+    return info;
+  }
   const BodyId bottom_id =
       model.add_rigid_strip("bottom", bottom, first_body_material, -period, mass, inertia);
   const BodyId top_id =
       model.add_rigid_strip("top", top, first_body_material, period, mass, inertia);
-  const double closing_speed = (packed_height - info.gap) / def.compaction_time;
   for (BodyId b : {bottom_id, top_id}) {
     RigidDrive& d =
         model.rigid
@@ -173,16 +225,7 @@ ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId g
     }
   }
 
-  for (std::size_t i = 0; i < grains.size(); ++i) {
-    const std::string& name =
-        mixture.components[static_cast<std::size_t>(grains[i].component)].material;
-    const MaterialId material = name.empty() ? grain_material : material_by_name(model, name);
-    const std::string body_name = "grain_" + std::to_string(i);
-    if (grains[i].rigid)
-      model.add_rigid_body(body_name, packed.contours[i], material);
-    else
-      model.add_deformable_body(body_name, packed.contours[i], material, params);
-  }
+  add_grains(model, grains, packed, mixture, grain_material, params);
   return info;
 }
 

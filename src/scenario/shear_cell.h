@@ -1,7 +1,8 @@
 #pragma once
-// The third-body shear cell (papers 001/002 §2; 003): two rough rigid first bodies, periodic
-// in x over [0, L), and N grains between them. Bodies are named "bottom" and "top" (series.csv
-// columns bottom_fx ... top_y). Two ways to load the layer normally:
+// The third-body shear cell (papers 001/002 §2; 003): two rough first bodies, rigid or
+// deformable (paper 000 §3), periodic in x over [0, L), and N grains between them. Bodies are
+// named "bottom" and "top" (series.csv columns bottom_fx ... top_y). Two ways to load the layer
+// normally:
 //  - gap (papers 001/002): the top first moves down to the requested mean gap D during the
 //    compaction time (motion-driven), then holds it;
 //  - pressure (paper 003, "a constant normal pressure of 1 GPa imposed onto the upper border
@@ -9,6 +10,7 @@
 //    ramped from 0 over the compaction time, with a viscous servo force -c v_y so that it
 //    settles on the layer instead of bouncing; the gap is then an output.
 // After the compaction time the top slides at +V/2 and the bottom at -V/2 in both cases.
+// Deformable first bodies are driven through their back faces (NodeDrive), gap loading only.
 // The grains are a mixture of discs and ellipses by number fraction (paper 003: as many
 // circles of 0.3-0.5 um diameter as ellipses of 1-2 x 0.6-1.2 um), deformable or rigid.
 #include <cstdint>
@@ -24,6 +26,13 @@ namespace sg {
 
 enum class NormalLoad { gap, pressure };
 
+// The first bodies: rigid strips (papers 001-003), or deformable periodic strips meshed like
+// the grains (paper 000 §3: "two deformable bodies (so-called first bodies) ... The lower
+// boundary is fixed, the upper boundary is submitted to an imposed vertical displacement ...
+// and to a horizontal velocity"): their back faces (at first_body_thickness from the mean
+// surface) are driven as the rigid bodies would be, the rest of each strip deforms.
+enum class FirstBodyKind { rigid, deformable };
+
 struct ShearCellDef {
   double length = 20.0;                                 // L, the period (length)
   int grains = 60;                                      // N
@@ -31,11 +40,14 @@ struct ShearCellDef {
   // Grain mixture; empty: discs of `diameter` in grain_material. A component with an empty
   // material uses grain_material; its contour spacing is set to the node spacing.
   std::vector<GrainComponentDef> components;
-  std::string grain_material;         // a [[materials]] name
-  std::string first_body_material;    // a [[materials]] name
-  double roughness_rms = 0.3;         // RMS height of both surfaces (length)
-  double hurst = 0.8;                 // Hurst exponent of the self-affine surfaces
-  double first_body_thickness = 2.0;  // for the first bodies' mass (length)
+  std::string grain_material;       // a [[materials]] name
+  std::string first_body_material;  // a [[materials]] name
+  double roughness_rms = 0.3;       // RMS height of both surfaces (length)
+  double hurst = 0.8;               // Hurst exponent of the self-affine surfaces
+  // Rigid: for the first bodies' mass; deformable: the strips' thickness, from the mean
+  // surface to the back face (length).
+  double first_body_thickness = 2.0;
+  FirstBodyKind first_bodies = FirstBodyKind::rigid;
   NormalLoad normal_load = NormalLoad::gap;
   double gap = 0.0;  // gap loading: D, mean gap after compaction; 0: 90% of the packed height
   // Pressure loading: p, force per unit length (a stress times the unit depth of 2D).

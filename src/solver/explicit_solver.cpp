@@ -48,8 +48,17 @@ void ExplicitSolver::step(double dt) {
   }
 
   // Per body: kinetic energy (time-centred), power of gravity, f_v . v_n+1/2, and a probe
-  // that becomes NaN iff some updated value is not finite (0 * inf = NaN).
-  body_sums_.assign(4 * model_.bodies.size(), 0.0);
+  // that becomes NaN iff some updated value is not finite (0 * inf = NaN). Then per node
+  // drive: the imposed velocities at t_n+1/2 (2), the reaction (2) and R . v_n-1/2,
+  // R . v_n+1/2 (2). A drive's nodes are in one body: one thread writes its sums.
+  const std::size_t drive_count = model_.node_drives.size();
+  body_sums_.assign(4 * model_.bodies.size() + 6 * drive_count, 0.0);
+  double* const drive_data = body_sums_.data() + 4 * model_.bodies.size();
+  const double t_mid = state_.time + 0.5 * dt;  // velocities live at half steps
+  for (std::size_t d = 0; d < drive_count; ++d)
+    for (int c = 0; c < 2; ++c)
+      if (model_.node_drives[d].mode[c] == DriveMode::velocity)
+        drive_data[6 * d + static_cast<std::size_t>(c)] = model_.node_drives[d].velocity[c](t_mid);
 #pragma omp parallel for schedule(static)
   for (int b = 0; b < body_count; ++b) {
     const Body& body = model_.bodies[static_cast<std::size_t>(b)];
@@ -58,8 +67,29 @@ void ExplicitSolver::step(double dt) {
     for (int k = body.node_begin; k < body.node_end; ++k) {
       const auto i = static_cast<std::size_t>(k);
       const double vx_old = n.vx[i], vy_old = n.vy[i];
-      n.vx[i] += dt * n.inverse_mass[i] * n.fx[i];
-      n.vy[i] += dt * n.inverse_mass[i] * n.fy[i];
+      const int drive = n.drive[i];
+      if (drive < 0) {
+        n.vx[i] += dt * n.inverse_mass[i] * n.fx[i];
+        n.vy[i] += dt * n.inverse_mass[i] * n.fy[i];
+      } else {
+        const NodeDrive& nd = model_.node_drives[static_cast<std::size_t>(drive)];
+        double* sums = drive_data + 6 * static_cast<std::size_t>(drive);
+        double* velocity[2] = {&n.vx[i], &n.vy[i]};
+        double* force[2] = {&n.fx[i], &n.fy[i]};
+        for (std::size_t c = 0; c < 2; ++c) {
+          if (nd.mode[c] != DriveMode::velocity) {
+            *velocity[c] += dt * n.inverse_mass[i] * *force[c];
+            continue;
+          }
+          const double v_old = *velocity[c], v_new = sums[c];
+          const double reaction = n.mass[i] * (v_new - v_old) / dt - *force[c];
+          *force[c] += reaction;  // fx, fy: the total force on the parameter
+          *velocity[c] = v_new;
+          sums[2 + c] += reaction;
+          sums[4] += reaction * v_old;
+          sums[5] += reaction * v_new;
+        }
+      }
       n.ux[i] += dt * n.vx[i];
       n.uy[i] += dt * n.vy[i];
       kinetic += 0.5 * n.mass[i] * (vx_old * n.vx[i] + vy_old * n.vy[i]);
@@ -106,6 +136,17 @@ void ExplicitSolver::step(double dt) {
   // Increments over [t_n, t_n+1]: the work of f_ext along u_n+1 - u_n = dt v_n+1/2 is exact.
   pending_external_work_ = dt * external_power;
   pending_damping_dissipation_ = -0.5 * dt * viscous_work_new;
+  // Work of the node drives' reactions, split as the servo loads' (see the header).
+  double drive_work_old = 0.0, drive_work_new = 0.0;
+  for (std::size_t d = 0; d < drive_count; ++d) {
+    const double* sums = drive_data + 6 * d;
+    model_.node_drives[d].reaction = Vec2(sums[2], sums[3]);
+    drive_work_old += sums[4];
+    drive_work_new += sums[5];
+  }
+  e.external_work += pending_drive_work_;
+  if (state_.step > 0) e.external_work += 0.5 * dt * drive_work_old;
+  pending_drive_work_ = 0.5 * dt * drive_work_new;
 
   state_.time += dt;
   ++state_.step;

@@ -10,6 +10,13 @@
 // 1/2 sum m v_{n-1/2} . v_{n+1/2}: for a linear undamped system this "time-centred" kinetic
 // energy plus the elastic energy is exactly conserved by the scheme, so the ledger measures
 // the physics and not the O(dt) staggering of the update.
+//
+// Driven field nodes (Model::node_drives, the back faces of deformable strips): a driven
+// component gets v_n+1/2 = V(t_n + dt/2) exactly; the force that takes, beyond the forces the
+// node receives, is the drive's reaction R_I = m_I (v_n+1/2 - v_n-1/2) / dt - f_I. The nodes
+// stay part of the system (their kinetic energy is counted) and the work of R is external
+// work, booked like the servo loads: 1/2 dt R_n . (v_n-1/2 + v_n+1/2), which is what the
+// time-centred kinetic energy sees, so the ledger stays closed.
 #include <string>
 #include <vector>
 
@@ -71,7 +78,12 @@ class ExplicitSolver {
   // The same for servo-loaded rigid degrees of freedom (their imposed force and viscous force).
   double pending_load_work_ = 0.0;
   double pending_servo_dissipation_ = 0.0;
-  std::vector<double> body_sums_;  // per-body partial sums of the update (scratch)
+  // The same for the reactions of driven field nodes (NodeDrive: the back faces of deformable
+  // strips).
+  double pending_drive_work_ = 0.0;
+  // Scratch: per-body partial sums of the update, then per node drive its imposed velocities
+  // and partial sums (see step()).
+  std::vector<double> body_sums_;
   void check_finite_velocities() const;
   // Advances rigid bodies; returns (kinetic energy time-centred, external power of gravity
   // and constant forces). Books the load work and servo dissipation of DriveMode::load

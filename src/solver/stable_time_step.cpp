@@ -125,8 +125,13 @@ double contact_frequency(const Model& model, const Body& body, double k) {
     const auto a = static_cast<std::size_t>(body.node_begin + i);
     const auto prev = static_cast<std::size_t>(body.node_begin + (i + count - 1) % count);
     const auto next = static_cast<std::size_t>(body.node_begin + (i + 1) % count);
-    const double l = 0.5 * (std::hypot(n.ref_x[next] - n.ref_x[a], n.ref_y[next] - n.ref_y[a]) +
-                            std::hypot(n.ref_x[prev] - n.ref_x[a], n.ref_y[prev] - n.ref_y[a]));
+    // An open contour (a deformable strip) closes across the periodic seam: the last node's
+    // next point is the first shifted by closing_shift_x (not the far end of the cell).
+    const double shift_next = body.open_contour && i == count - 1 ? body.closing_shift_x : 0.0;
+    const double shift_prev = body.open_contour && i == 0 ? -body.closing_shift_x : 0.0;
+    const double l =
+        0.5 * (std::hypot(n.ref_x[next] + shift_next - n.ref_x[a], n.ref_y[next] - n.ref_y[a]) +
+               std::hypot(n.ref_x[prev] + shift_prev - n.ref_x[a], n.ref_y[prev] - n.ref_y[a]));
     omega2 = std::max(omega2, 2.0 * k * l * n.inverse_mass[a]);
   }
   return std::sqrt(omega2);

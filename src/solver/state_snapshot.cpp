@@ -15,6 +15,7 @@ struct SolverSnapshotAccess {
     p.damping_dissipation = s.pending_damping_dissipation_;
     p.load_work = s.pending_load_work_;
     p.servo_dissipation = s.pending_servo_dissipation_;
+    p.drive_work = s.pending_drive_work_;
     return p;
   }
   static void set_pending(ExplicitSolver& s, const SolverPendingIncrements& p) {
@@ -22,6 +23,7 @@ struct SolverSnapshotAccess {
     s.pending_damping_dissipation_ = p.damping_dissipation;
     s.pending_load_work_ = p.load_work;
     s.pending_servo_dissipation_ = p.servo_dissipation;
+    s.pending_drive_work_ = p.drive_work;
   }
 };
 
@@ -45,6 +47,11 @@ void capture_state(const ExplicitSolver& solver, const ContactSystem* contacts,
   snapshot.rigid_fx = r.fx;
   snapshot.rigid_fy = r.fy;
   snapshot.rigid_torque = r.torque;
+  snapshot.drive_reaction.resize(2 * model.node_drives.size());
+  for (std::size_t d = 0; d < model.node_drives.size(); ++d) {
+    snapshot.drive_reaction[2 * d] = model.node_drives[d].reaction.x();
+    snapshot.drive_reaction[2 * d + 1] = model.node_drives[d].reaction.y();
+  }
   snapshot.solver = solver.state();
   snapshot.pending = SolverSnapshotAccess::pending(solver);
   snapshot.has_contacts = contacts != nullptr;
@@ -72,6 +79,9 @@ void restore_state(const StateSnapshot& snapshot, ExplicitSolver& solver, Contac
     SG_VERIFY(a->size() == rigid, "state snapshot: " << a->size()
                                                      << " rigid-body values for a model of "
                                                      << rigid << " rigid bodies");
+  SG_VERIFY(snapshot.drive_reaction.size() == 2 * model.node_drives.size(),
+            "state snapshot: " << snapshot.drive_reaction.size() / 2
+                               << " node drives for a model of " << model.node_drives.size());
   SG_VERIFY(snapshot.has_contacts == (contacts != nullptr),
             "state snapshot: taken " << (snapshot.has_contacts ? "with" : "without")
                                      << " contacts, restored into a run "
@@ -104,6 +114,9 @@ void restore_state(const StateSnapshot& snapshot, ExplicitSolver& solver, Contac
   r.fx = snapshot.rigid_fx;
   r.fy = snapshot.rigid_fy;
   r.torque = snapshot.rigid_torque;
+  for (std::size_t d = 0; d < model.node_drives.size(); ++d)
+    model.node_drives[d].reaction =
+        Vec2(snapshot.drive_reaction[2 * d], snapshot.drive_reaction[2 * d + 1]);
   solver.state() = snapshot.solver;
   SolverSnapshotAccess::set_pending(solver, snapshot.pending);
 }

@@ -6,6 +6,7 @@
 //   field nodes   u, v, and ref_x (ExplicitSolver::wrap_periodic_bodies moves a deformable
 //                 body across the periodic seam by shifting its reference positions)
 //   rigid bodies  pose, velocities, and the forces received at the last evaluation
+//   node drives   the reactions at the last evaluation
 //   solver        time, step count, energy ledger, and the work and dissipation of the last
 //                 step that the next step books (ExplicitSolver's pending increments)
 //   contacts      per-contact histories, the previous contour positions (slip increments),
@@ -34,6 +35,7 @@ struct SolverPendingIncrements {
   double damping_dissipation = 0.0;
   double load_work = 0.0;  // servo-loaded rigid DOFs (DriveMode::load)
   double servo_dissipation = 0.0;
+  double drive_work = 0.0;  // reactions of driven field nodes (NodeDrive)
 };
 
 struct StateSnapshot {
@@ -43,6 +45,8 @@ struct StateSnapshot {
   std::vector<double> rigid_x, rigid_y, rigid_theta;
   std::vector<double> rigid_vx, rigid_vy, rigid_omega;
   std::vector<double> rigid_fx, rigid_fy, rigid_torque;
+  // Node drives: the reaction at the last evaluation (x, y per drive), like rigid_fx.
+  std::vector<double> drive_reaction;
   SolverState solver;
   SolverPendingIncrements pending;
   bool has_contacts = false;
@@ -57,7 +61,7 @@ StateSnapshot capture_state(const ExplicitSolver& solver, const ContactSystem* c
 
 // Puts `snapshot` back into `solver`, its model and `contacts`. Throws sg::Error if the
 // snapshot does not fit (another number of nodes, rigid bodies or contour points, contacts
-// expected and not given or the reverse).
+// expected and not given or the reverse, another number of node drives).
 void restore_state(const StateSnapshot& snapshot, ExplicitSolver& solver, ContactSystem* contacts);
 
 }  // namespace sg
