@@ -139,7 +139,7 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
   const TomlReader root = document.root();
   root.reject_unknown_keys({"name", "time", "output", "discretization", "physics", "materials",
                             "grains", "walls", "contact_laws", "contact", "periodic",
-                            "shear_cell"});
+                            "shear_cell", "compaction_box"});
   ScenarioDef s;
   s.source = file;
   s.name = root.string("name", file.stem().string());
@@ -250,9 +250,14 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
     c.seed = static_cast<std::uint64_t>(seed);
     s.shear_cell = c;
   }
+  if (auto t = root.table("compaction_box")) {
+    if (s.shear_cell) t->fail("width", "a scenario holds a [shear_cell] or a [compaction_box]");
+    s.compaction_box = read_compaction_box(*t, material_names);
+  }
   const std::vector<TomlReader> grains = root.array_of_tables("grains");
-  if (grains.empty() && !s.shear_cell)
-    root.fail("grains", "at least one [[grains]] table (or a [shear_cell]) is required");
+  if (grains.empty() && !s.shear_cell && !s.compaction_box)
+    root.fail("grains",
+              "at least one [[grains]] table (or a [shear_cell] or [compaction_box]) is required");
   std::set<std::string> grain_names;
   for (std::size_t i = 0; i < grains.size(); ++i) {
     s.grains.push_back(read_grain(grains[i], i));
@@ -306,6 +311,12 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
       used.insert(s.shear_cell->grain_material);
       used.insert(s.shear_cell->first_body_material);
       for (const GrainComponentDef& c : s.shear_cell->components)
+        if (!c.material.empty()) used.insert(c.material);
+    }
+    if (const auto& box = s.compaction_box) {
+      if (!box->grain_material.empty()) used.insert(box->grain_material);
+      used.insert(box->wall_material);
+      for (const GrainComponentDef& c : box->components)
         if (!c.material.empty()) used.insert(c.material);
     }
     try {
@@ -382,6 +393,10 @@ Model build_model(const ScenarioDef& scenario) {
     add_shear_cell(model, cell, material_id(cell.grain_material),
                    material_id(cell.first_body_material), scenario.discretization);
   }
+  if (const auto& box = scenario.compaction_box)
+    add_compaction_box(model, *box,
+                       box->grain_material.empty() ? 0 : material_id(box->grain_material),
+                       material_id(box->wall_material), scenario.discretization);
   for (const WallDef& w : scenario.walls) {
     const BodyId b = model.add_rigid_body(w.name, make_rectangle(w.lower_left, w.upper_right, h),
                                           material_id(w.material));

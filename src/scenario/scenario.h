@@ -10,6 +10,7 @@
 #include "material/material.h"
 #include "meshfree/body_discretization.h"
 #include "model/model.h"
+#include "scenario/compaction_box.h"
 #include "scenario/shear_cell.h"
 
 #include <optional>
@@ -75,6 +76,8 @@ struct ScenarioDef {
   double contact_skin = 0.0;    // 0: equal to the cutoff
   // [shear_cell]: the third-body cell builder (periodic over [0, length)).
   std::optional<ShearCellDef> shear_cell;
+  // [compaction_box]: four rigid walls, the lid driven down (scenario/compaction_box.h).
+  std::optional<CompactionBoxDef> compaction_box;
   // [periodic]: periodic in x over [x_min, x_max) when set.
   bool periodic_x = false;
   double x_min = 0.0, x_max = 0.0;
