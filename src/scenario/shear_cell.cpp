@@ -178,14 +178,27 @@ ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId g
                                    first_body_material, params),
         model.add_deformable_strip("top", top, period, info.top_mean_y + def.first_body_thickness,
                                    first_body_material, params)};
+    // The back faces switch from closing to sliding with a linear ramp centred on the end of
+    // the compaction (so the travel is that of the rigid bodies' sharp switch) and lasting the
+    // strip's fundamental shear period T_s = 4 H / c_s (a layer of thickness H fixed at its
+    // back, free at its surface): a ramp of one period leaves that mode no residual vibration
+    // (the response to a ramp of duration tau rings with amplitude ~ |sin(omega tau / 2)|), where
+    // the sharp switch makes a strip ring with a force amplitude of M V omega / 2, larger than
+    // the friction force it carries.
+    const MaterialDef& fb = model.material_defs[static_cast<std::size_t>(first_body_material)];
+    const double shear_speed = std::sqrt(fb.young / (2.0 * (1.0 + fb.poisson) * fb.density));
+    const double ramp = std::min(4.0 * def.first_body_thickness / shear_speed, def.compaction_time);
+    const double t0 = def.compaction_time - 0.5 * ramp, t1 = def.compaction_time + 0.5 * ramp;
+    auto ramp_between = [&](double before, double after) {
+      return PiecewiseLinear{{0.0, t0, t1}, {before, before, after}};
+    };
     for (BodyId b : ids) {
       NodeDrive& d = model.node_drives[static_cast<std::size_t>(
           model.bodies[static_cast<std::size_t>(b)].node_drive)];
       const bool is_top = b == ids[1];
       d.mode[0] = d.mode[1] = DriveMode::velocity;
-      d.velocity[0] = switch_at(def.compaction_time, 0.0, (is_top ? 0.5 : -0.5) * def.velocity);
-      d.velocity[1] = is_top ? switch_at(def.compaction_time, -closing_speed, 0.0)
-                             : PiecewiseLinear::constant(0.0);
+      d.velocity[0] = ramp_between(0.0, (is_top ? 0.5 : -0.5) * def.velocity);
+      d.velocity[1] = is_top ? ramp_between(-closing_speed, 0.0) : PiecewiseLinear::constant(0.0);
       // The whole strip starts at its back face's velocity (a rigid strip would): no wave
       // sent through it by a back face set in motion alone at t = 0.
       set_rigid_velocity(model, b, Vec2(d.velocity[0](0.0), d.velocity[1](0.0)), 0.0);

@@ -237,7 +237,14 @@ void ExplicitSolver::wrap_periodic_bodies() {
     // A deformable body is moved by one period through its reference positions: u, v and
     // every precomputed row are invariant under a translation of the reference frame.
     const auto first = static_cast<std::size_t>(body.node_begin);
-    const double x = n.ref_x[first] + n.ux[first];
+    double x = n.ref_x[first] + n.ux[first];
+    if (body.open_contour) {
+      // A strip spans the cell: its first contour node sits at one end, where round-off would
+      // wrap it back and forth every step. Its middle (between its two ends) is kept in the
+      // cell instead: a strip drifting along x moves by a period once it has drifted L/2.
+      const auto last = static_cast<std::size_t>(body.boundary_end - 1);
+      x = 0.5 * (x + n.ref_x[last] + n.ux[last]);
+    }
     if (x < model_.x_min)
       shift = period;
     else if (x >= model_.x_max)
