@@ -1,6 +1,7 @@
 #include "model/model.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.h"
 
@@ -78,6 +79,11 @@ BodyId Model::add_deformable_strip(const std::string& name,
                                    const PeriodicStripDiscretization& strip, MaterialId material) {
   SG_VERIFY(strip.closing_shift_x != 0.0,
             "body '" << name << "': a strip needs a closing shift (the period)");
+  // Its rows see images one period away: that period must be the cell's.
+  SG_VERIFY(!periodic_x || std::abs(std::abs(strip.closing_shift_x) - (x_max - x_min)) <=
+                               1e-12 * (x_max - x_min),
+            "body '" << name << "': strip period " << std::abs(strip.closing_shift_x)
+                     << " differs from the periodic cell's " << x_max - x_min);
   const BodyId id = add_deformable_body(name, strip.body, material);
   Body& body = bodies[static_cast<std::size_t>(id)];
   body.open_contour = true;
