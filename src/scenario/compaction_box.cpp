@@ -54,6 +54,14 @@ double compaction_box_grain_size(const CompactionBoxDef& def) {
   return weighted / total;
 }
 
+MixtureDef compaction_box_mixture(const CompactionBoxDef& def, double spacing) {
+  MixtureDef mixture;
+  mixture.components = def.components;
+  for (GrainComponentDef& c : mixture.components)
+    c.shape.contour_spacing = spacing;
+  return mixture;
+}
+
 PiecewiseLinear lid_speed_history(const CompactionBoxDef& def, double initial_height,
                                   double& stop_time, double& travelled) {
   const double v = def.lid_velocity, ramp = def.lid_ramp_time;
@@ -109,11 +117,7 @@ CompactionBoxInfo add_compaction_box(Model& model, const CompactionBoxDef& def,
                                       << h << " must be below half the grain size " << grain_size
                                       << " (the walls' clearance is one node spacing)");
 
-  MixtureDef mixture;
-  mixture.components = def.components;
-  for (GrainComponentDef& c : mixture.components)
-    c.shape.contour_spacing = h;
-  info.grains = generate_grains(mixture, def.grains, def.seed);
+  info.grains = generate_grains(compaction_box_mixture(def, h), def.grains, def.seed);
   for (const GrainDef& g : info.grains) {
     info.grain_area += signed_area(g.contour);
     ++(g.rigid ? info.rigid_grains : info.deformable_grains);

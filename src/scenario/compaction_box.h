@@ -87,6 +87,9 @@ struct CompactionBoxInfo {
 // thickness.
 double compaction_box_grain_size(const CompactionBoxDef& def);
 
+// The mixture add_compaction_box generates: the components, contour spacing = `spacing`.
+MixtureDef compaction_box_mixture(const CompactionBoxDef& def, double spacing);
+
 // The lid's downward velocity history (length / time, positive down) for a travel of
 // `travel` (final_height set) or a duration (compaction_time set); `stop_time` receives the
 // end of the motion and `travelled` the distance covered by then. Throws if the ramps do

@@ -1,0 +1,488 @@
+#include "render/sample_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <set>
+#include <sstream>
+
+#include "contact/contact_system.h"
+#include "core/error.h"
+#include "geometry/packing.h"
+#include "io/atomic_file.h"
+#include "io/vtk_writer.h"
+#include "model/kinematics.h"
+#include "render/snapshot_renderer.h"
+#include "solver/mass_scaling.h"
+#include "solver/stable_time_step.h"
+
+namespace sg {
+
+namespace {
+
+// The contour of body b at t = 0, from the current contour positions.
+Polygon body_contour(const Model& model, const std::vector<Vec2>& positions, std::size_t b) {
+  const Body& body = model.bodies[b];
+  return Polygon(positions.begin() + body.contour_begin, positions.begin() + body.contour_end);
+}
+
+// The grains a builder generated, regenerated with its mixture and seed (generate_grains is
+// deterministic), so their drawn sizes and components are known; empty for explicit grains.
+std::vector<GrainDef> regenerated_grains(const ScenarioDef& s, MixtureDef& mixture) {
+  const double h = s.discretization.mesh.spacing;
+  if (const auto& box = s.compaction_box) {
+    mixture = compaction_box_mixture(*box, h);
+    return generate_grains(mixture, box->grains, box->seed);
+  }
+  if (const auto& cell = s.shear_cell) {
+    // As scenario/shear_cell.cpp builds it: the components, or one disc component of
+    // `diameter`; contour spacing = the node spacing. The area check below catches a drift.
+    if (cell->components.empty()) {
+      GrainComponentDef c;
+      c.name = "discs";
+      c.shape.kind = GrainShapeKind::disc;
+      c.shape.diameter = cell->diameter;
+      mixture.components.push_back(c);
+    } else {
+      mixture.components = cell->components;
+    }
+    for (GrainComponentDef& c : mixture.components)
+      c.shape.contour_spacing = h;
+    return generate_grains(mixture, cell->grains, cell->seed);
+  }
+  return {};
+}
+
+double mean_of(const std::vector<double>& v) {
+  double sum = 0.0;
+  for (double x : v)
+    sum += x;
+  return v.empty() ? 0.0 : sum / static_cast<double>(v.size());
+}
+
+// Population standard deviation (the law's std is a population quantity).
+double std_of(const std::vector<double>& v) {
+  const double m = mean_of(v);
+  double sum = 0.0;
+  for (double x : v)
+    sum += (x - m) * (x - m);
+  return v.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(v.size()));
+}
+
+struct Box {
+  Vec2 lo, hi;
+};
+
+Box bounds(const Polygon& p) {
+  Box b{p.front(), p.front()};
+  for (const Vec2& v : p) {
+    b.lo = b.lo.cwiseMin(v);
+    b.hi = b.hi.cwiseMax(v);
+  }
+  return b;
+}
+
+// The segments of a contour: closed, or open with the last point joined to the first
+// shifted by `closing_shift` (a periodic strip).
+std::vector<std::pair<Vec2, Vec2>> segments_of(const Polygon& p, bool open, double closing_shift) {
+  std::vector<std::pair<Vec2, Vec2>> s;
+  s.reserve(p.size());
+  for (std::size_t i = 0; i + 1 < p.size(); ++i)
+    s.emplace_back(p[i], p[i + 1]);
+  s.emplace_back(p.back(), open ? p.front() + Vec2(closing_shift, 0.0) : p.front());
+  return s;
+}
+
+double point_segments_distance(const Vec2& q, const std::vector<std::pair<Vec2, Vec2>>& segs) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& [a, b] : segs) {
+    best = std::min(best, project_on_segment(q, a, b).distance);
+  }
+  return best;
+}
+
+bool any_crossing(const std::vector<std::pair<Vec2, Vec2>>& sa,
+                  const std::vector<std::pair<Vec2, Vec2>>& sb) {
+  for (const auto& [a0, a1] : sa)
+    for (const auto& [b0, b1] : sb)
+      if (segments_intersect(a0, a1, b0, b1)) return true;
+  return false;
+}
+
+std::string fixed(double v, int digits = 4) {
+  std::ostringstream s;
+  s << std::setprecision(digits) << v;
+  return s.str();
+}
+
+}  // namespace
+
+void measure_gaps(const Model& model, SampleReport& r) {
+  std::vector<Vec2> positions;
+  compute_contour_positions(model, positions);
+  const std::size_t n = model.bodies.size();
+  std::vector<Polygon> contours(n);
+  std::vector<Box> boxes(n);
+  std::vector<double> sizes;
+  for (std::size_t b = 0; b < n; ++b) {
+    contours[b] = body_contour(model, positions, b);
+    boxes[b] = bounds(contours[b]);
+    if (!model.bodies[b].open_contour) sizes.push_back((boxes[b].hi - boxes[b].lo).maxCoeff());
+  }
+  // Pairs whose boxes are farther apart than a typical body size cannot hold the smallest
+  // gap of a packing (its grains touch to within a fraction of their size).
+  std::sort(sizes.begin(), sizes.end());
+  const double reach = sizes.empty() ? 1.0 : sizes[sizes.size() / 2];
+  const double period = model.x_max - model.x_min;
+  std::vector<double> shifts{0.0};
+  if (model.periodic_x) shifts = {-period, 0.0, period};
+  r.smallest_gap = std::numeric_limits<double>::infinity();
+  r.overlapping_pairs = 0;
+  double deepest = 0.0;
+  std::vector<std::vector<std::pair<Vec2, Vec2>>> segs(n);
+  for (std::size_t b = 0; b < n; ++b)
+    segs[b] =
+        segments_of(contours[b], model.bodies[b].open_contour, model.bodies[b].closing_shift_x);
+  for (std::size_t a = 0; a < n; ++a) {
+    for (std::size_t b = a + 1; b < n; ++b) {
+      bool overlap = false;
+      for (double shift : shifts) {
+        const Vec2 d(shift, 0.0);
+        const Box& A = boxes[a];
+        const Box B{boxes[b].lo + d, boxes[b].hi + d};
+        if (A.lo.x() > B.hi.x() + reach || B.lo.x() > A.hi.x() + reach ||
+            A.lo.y() > B.hi.y() + reach || B.lo.y() > A.hi.y() + reach)
+          continue;
+        std::vector<std::pair<Vec2, Vec2>> sb = segs[b];
+        for (auto& [p, q] : sb) {
+          p += d;
+          q += d;
+        }
+        Polygon pb = contours[b];
+        for (Vec2& v : pb)
+          v += d;
+        // Exact: crossing edges, or a closed contour inside the other (containment).
+        bool inside = false;
+        const bool closed = !model.bodies[a].open_contour && !model.bodies[b].open_contour;
+        if (closed) inside = contains(contours[a], pb.front()) || contains(pb, contours[a].front());
+        if (inside || any_crossing(segs[a], sb)) {
+          overlap = true;
+          // Depth: the farthest contour point of one body inside the other (closed contours).
+          if (closed) {
+            for (const Vec2& v : pb)
+              if (contains(contours[a], v))
+                deepest = std::max(deepest, distance_to_contour(contours[a], v));
+            for (const Vec2& v : contours[a])
+              if (contains(pb, v)) deepest = std::max(deepest, distance_to_contour(pb, v));
+          }
+          continue;
+        }
+        double gap = std::numeric_limits<double>::infinity();
+        for (const Vec2& v : contours[a])
+          gap = std::min(gap, point_segments_distance(v, sb));
+        for (const Vec2& v : pb)
+          gap = std::min(gap, point_segments_distance(v, segs[a]));
+        if (gap < r.smallest_gap) {
+          r.smallest_gap = gap;
+          r.gap_body_a = model.bodies[a].name;
+          r.gap_body_b = model.bodies[b].name;
+        }
+      }
+      if (overlap) {
+        if (r.overlapping_pairs == 0) {
+          r.gap_body_a = model.bodies[a].name;
+          r.gap_body_b = model.bodies[b].name;
+        }
+        ++r.overlapping_pairs;
+      }
+    }
+  }
+  if (r.overlapping_pairs > 0) r.smallest_gap = -deepest;
+}
+
+SampleReport measure_sample(const ScenarioDef& scenario, Model& model) {
+  SampleReport r;
+  r.name = scenario.name;
+  r.builder = scenario.compaction_box ? "compaction_box"
+              : scenario.shear_cell   ? "shear_cell"
+                                      : "explicit";
+  r.bodies = model.bodies.size();
+  r.nodes = model.node_count();
+  r.gauss_points = model.gauss_point_count();
+  r.contour_points = model.contour_point_count();
+  r.triangles = model.triangles.size();
+
+  // Grains: the builders' grain_<i>, and the explicit [[grains]].
+  std::set<std::string> grain_names;
+  for (const GrainSpec& g : scenario.grains)
+    grain_names.insert(g.name);
+  const int built = scenario.compaction_box ? scenario.compaction_box->grains
+                    : scenario.shear_cell   ? scenario.shear_cell->grains
+                                            : 0;
+  for (int i = 0; i < built; ++i)
+    grain_names.insert("grain_" + std::to_string(i));
+  std::vector<Vec2> positions;
+  compute_contour_positions(model, positions);
+  std::vector<double> body_area(model.bodies.size(), 0.0);
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const Body& body = model.bodies[b];
+    const bool rigid = body.kind == BodyKind::rigid;
+    ++(rigid ? r.rigid_bodies : r.deformable_bodies);
+    if (!grain_names.count(body.name)) {
+      ++r.other_bodies;
+      continue;
+    }
+    ++r.grains;
+    ++(rigid ? r.rigid_grains : r.deformable_grains);
+    body_area[b] = signed_area(body_contour(model, positions, b));
+    r.grain_area += body_area[b];
+  }
+
+  // The container at t = 0, read off the built bodies.
+  auto find_body = [&](const std::string& name) -> int {
+    for (std::size_t b = 0; b < model.bodies.size(); ++b)
+      if (model.bodies[b].name == name) return static_cast<int>(b);
+    return -1;
+  };
+  auto contour_of = [&](const std::string& name) {
+    const int b = find_body(name);
+    SG_VERIFY(b >= 0, "sample: no body named '" << name << "'");
+    return body_contour(model, positions, static_cast<std::size_t>(b));
+  };
+  if (scenario.compaction_box) {
+    const Box bottom = bounds(contour_of("bottom")), left = bounds(contour_of("left"));
+    const Box right = bounds(contour_of("right")), lid = bounds(contour_of("lid"));
+    r.container_area = (right.lo.x() - left.hi.x()) * (lid.lo.y() - bottom.hi.y());
+  } else if (scenario.shear_cell) {
+    const Polygon bottom = contour_of("bottom"), top = contour_of("top");
+    const double gap = mean_of([&] {
+                         std::vector<double> y;
+                         for (const Vec2& v : top)
+                           y.push_back(v.y());
+                         return y;
+                       }()) -
+                       mean_of([&] {
+                         std::vector<double> y;
+                         for (const Vec2& v : bottom)
+                           y.push_back(v.y());
+                         return y;
+                       }());
+    r.container_area = (model.x_max - model.x_min) * gap;
+    // Roughness: RMS of each surface's heights about its mean (paper 001: RMS of the profile).
+    for (const auto& [name, surface] : {std::pair{"bottom", bottom}, std::pair{"top", top}}) {
+      std::vector<double> y;
+      for (const Vec2& v : surface)
+        y.push_back(v.y());
+      r.roughness.push_back({name, scenario.shear_cell->roughness_rms, std_of(y)});
+    }
+  }
+  if (r.container_area > 0.0) r.solid_fraction = r.grain_area / r.container_area;
+
+  // Sizes: requested law vs the generator's draws, per component.
+  MixtureDef mixture;
+  const std::vector<GrainDef> grains = regenerated_grains(scenario, mixture);
+  if (grains.empty()) {
+    r.sizes_note = "explicit grains: no size law requested";
+  } else {
+    bool consistent = true;
+    std::vector<std::vector<double>> drawn(mixture.components.size()),
+        area_diameter(mixture.components.size());
+    for (std::size_t i = 0; i < grains.size(); ++i) {
+      const int b = find_body("grain_" + std::to_string(i));
+      const double area = b >= 0 ? body_area[static_cast<std::size_t>(b)] : 0.0;
+      const double generated = signed_area(grains[i].contour);
+      if (!(std::abs(area - generated) <= 1e-9 * generated)) consistent = false;
+      const auto c = static_cast<std::size_t>(grains[i].component);
+      drawn[c].push_back(grains[i].size);
+      area_diameter[c].push_back(2.0 * std::sqrt(area / std::numbers::pi));
+    }
+    if (!consistent)
+      r.sizes_note =
+          "the regenerated grains differ from the built ones (areas): sizes not measured";
+    for (std::size_t c = 0; consistent && c < mixture.components.size(); ++c) {
+      const GrainComponentDef& def = mixture.components[c];
+      ComponentSizes s;
+      s.name = def.name;
+      s.rigid = def.rigid;
+      const bool ellipse = def.shape.kind == GrainShapeKind::ellipse;
+      s.quantity = def.shape.kind == GrainShapeKind::disc ? "diameter"
+                   : ellipse                              ? "long axis"
+                                                          : "2 r_mean";
+      // Ellipses: the long axis is the major-axis draw unless the ranges overlap and the
+      // draws were swapped (packing.h), so the law's moments are exact only without overlap.
+      const SizeRangeDef& law = ellipse ? def.shape.major_axis : def.shape.diameter;
+      s.count = static_cast<int>(drawn[c].size());
+      s.requested_mean = size_mean(law);
+      s.requested_std = std::sqrt(size_variance(law));
+      s.drawn_mean = mean_of(drawn[c]);
+      s.drawn_std = std_of(drawn[c]);
+      s.area_diameter_mean = mean_of(area_diameter[c]);
+      r.sizes.push_back(s);
+    }
+  }
+
+  measure_gaps(model, r);
+
+  // Step, mass scaling and memory: as `softgrain info` computes them (app/commands/info).
+  double contact_stiffness = 0.0;
+  if (!scenario.contact_laws.empty())
+    contact_stiffness =
+        ContactSystem(model, contact_law_table(scenario), contact_settings(scenario))
+            .max_stiffness();
+  if (scenario.mass_scaling_step > 0.0)
+    r.mass_scaling = describe(apply_mass_scaling(model, scenario.mass_scaling_step,
+                                                 scenario.time_step_safety, contact_stiffness),
+                              model);
+  const StableStep stable =
+      estimate_stable_time_step(model, scenario.time_step_safety, contact_stiffness);
+  r.stable_step = stable.dt;
+  r.damping_limited = stable.damping_limited;
+  if (stable.limiting_body >= 0)
+    r.limiting_body = model.bodies[static_cast<std::size_t>(stable.limiting_body)].name;
+  if (stable.dt > 0.0) r.steps = static_cast<long>(scenario.duration / stable.dt);
+  const double bytes = static_cast<double>(model.node_count()) * 12 * sizeof(double) +
+                       static_cast<double>(model.gauss_rows.entries()) * (4 * sizeof(double) + 4) +
+                       static_cast<double>(model.node_rows.entries()) * (4 * sizeof(double) + 4);
+  r.memory_mib = bytes / 1048576.0;
+  return r;
+}
+
+std::string sample_json(const SampleReport& r) {
+  using json = nlohmann::ordered_json;
+  json doc;
+  doc["format"] = "softgrain-sample";
+  doc["version"] = 1;
+  doc["name"] = r.name;
+  doc["builder"] = r.builder;
+  doc["counts"] = {{"bodies", r.bodies},
+                   {"rigid_bodies", r.rigid_bodies},
+                   {"deformable_bodies", r.deformable_bodies},
+                   {"grains", r.grains},
+                   {"rigid_grains", r.rigid_grains},
+                   {"deformable_grains", r.deformable_grains},
+                   {"other_bodies", r.other_bodies},
+                   {"nodes", r.nodes},
+                   {"gauss_points", r.gauss_points},
+                   {"contour_points", r.contour_points},
+                   {"triangles", r.triangles}};
+  json packing;
+  packing["grain_area"] = r.grain_area;
+  packing["container_area"] = r.container_area > 0.0 ? json(r.container_area) : json(nullptr);
+  packing["solid_fraction"] = r.container_area > 0.0 ? json(r.solid_fraction) : json(nullptr);
+  const bool finite_gap = std::isfinite(r.smallest_gap);
+  packing["smallest_gap"] = finite_gap ? json(r.smallest_gap) : json(nullptr);
+  packing["smallest_gap_between"] = finite_gap || r.overlapping_pairs > 0
+                                        ? json::array({r.gap_body_a, r.gap_body_b})
+                                        : json(nullptr);
+  packing["overlapping_pairs"] = r.overlapping_pairs;
+  doc["packing"] = packing;
+  json sizes = json::array();
+  for (const ComponentSizes& s : r.sizes)
+    sizes.push_back({{"component", s.name},
+                     {"rigid", s.rigid},
+                     {"quantity", s.quantity},
+                     {"count", s.count},
+                     {"requested_mean", s.requested_mean},
+                     {"requested_std", s.requested_std},
+                     {"drawn_mean", s.drawn_mean},
+                     {"drawn_std", s.drawn_std},
+                     {"area_diameter_mean", s.area_diameter_mean}});
+  doc["sizes"] = sizes;
+  if (!r.sizes_note.empty()) doc["sizes_note"] = r.sizes_note;
+  json rough = json::array();
+  for (const SurfaceRoughness& s : r.roughness)
+    rough.push_back(
+        {{"body", s.body}, {"requested_rms", s.requested_rms}, {"measured_rms", s.measured_rms}});
+  doc["roughness"] = rough;
+  doc["time_step"] = {{"stable_step", r.stable_step},
+                      {"damping_limited", r.damping_limited},
+                      {"limiting_body", r.limiting_body},
+                      {"steps", r.steps}};
+  if (!r.mass_scaling.empty()) doc["time_step"]["mass_scaling"] = r.mass_scaling;
+  doc["memory_mib"] = r.memory_mib;
+  return doc.dump(2) + "\n";
+}
+
+std::string sample_table(const SampleReport& r) {
+  std::ostringstream s;
+  s << "sample '" << r.name << "' (" << r.builder << ")\n"
+    << "  bodies          " << r.bodies << " (" << r.rigid_bodies << " rigid, "
+    << r.deformable_bodies << " deformable)\n"
+    << "  grains          " << r.grains << " (" << r.rigid_grains << " rigid, "
+    << r.deformable_grains << " deformable); walls / first bodies: " << r.other_bodies << "\n"
+    << "  nodes           " << r.nodes << " field nodes, " << r.gauss_points << " Gauss points, "
+    << r.contour_points << " contour points, " << r.triangles << " triangles\n";
+  if (r.container_area > 0.0)
+    s << "  solid fraction  " << fixed(r.solid_fraction) << " (grain area "
+      << fixed(r.grain_area, 6) << " / container " << fixed(r.container_area, 6) << ")\n";
+  if (r.overlapping_pairs > 0)
+    s << "  OVERLAP         " << r.overlapping_pairs << " pairs of bodies overlap (first: '"
+      << r.gap_body_a << "' and '" << r.gap_body_b << "', deepest " << -r.smallest_gap << ")\n";
+  else if (std::isfinite(r.smallest_gap))
+    s << "  smallest gap    " << fixed(r.smallest_gap) << " between '" << r.gap_body_a << "' and '"
+      << r.gap_body_b << "' (no overlap)\n";
+  if (!r.sizes.empty()) {
+    s << "  sizes           component      quantity    count  requested mean/std  drawn mean/std"
+         "  area-equiv. d\n";
+    for (const ComponentSizes& c : r.sizes)
+      s << "                  " << std::left << std::setw(14)
+        << (c.name + (c.rigid ? " (R)" : " (D)")) << " " << std::setw(11) << c.quantity << " "
+        << std::right << std::setw(5) << c.count << "  " << std::setw(8) << fixed(c.requested_mean)
+        << " / " << std::left << std::setw(7) << fixed(c.requested_std) << std::right << " "
+        << std::setw(7) << fixed(c.drawn_mean) << " / " << std::left << std::setw(7)
+        << fixed(c.drawn_std) << std::right << " " << fixed(c.area_diameter_mean) << "\n";
+  }
+  if (!r.sizes_note.empty()) s << "  sizes           " << r.sizes_note << "\n";
+  for (const SurfaceRoughness& g : r.roughness)
+    s << "  roughness       " << g.body << ": RMS " << fixed(g.measured_rms) << " (requested "
+      << fixed(g.requested_rms) << ")\n";
+  s << "  stable step     " << r.stable_step << " ("
+    << (r.damping_limited ? "damping-limited" : "wave-speed-limited") << ", body '"
+    << r.limiting_body << "'), " << r.steps << " steps\n";
+  if (!r.mass_scaling.empty()) s << "  " << r.mass_scaling << "\n";
+  s << "  memory          " << fixed(r.memory_mib) << " MiB (node state and shape rows)\n";
+  return s.str();
+}
+
+void write_sample(const Model& model, const SampleReport& report,
+                  const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  write_vtu_snapshot(model, dir / "sample.vtu");
+  write_file_atomically(dir / "sample.json", sample_json(report));
+}
+
+std::filesystem::path draw_sample_picture(const Model& model, const std::filesystem::path& dir,
+                                          const std::string& title) {
+  namespace fs = std::filesystem;
+  // render_run draws a run folder's fields.pvd: a one-entry index for the duration of the call.
+  const fs::path pvd = dir / "fields.pvd";
+  const fs::path render_dir = dir / "render";
+  SG_VERIFY(!fs::exists(render_dir),
+            "'" << render_dir.string() << "' exists: remove it (generate draws its picture there)");
+  struct Cleanup {
+    fs::path pvd, render_dir;
+    ~Cleanup() {
+      std::error_code ignored;
+      fs::remove(pvd, ignored);
+      fs::remove_all(render_dir, ignored);
+    }
+  } cleanup{pvd, render_dir};
+  PvdCollection(pvd).add(0.0, "sample.vtu");
+  RenderOptions options;
+  options.field = "body";  // one colour per body: rigid and deformable grains alike
+  options.last_frame_only = true;
+  options.movie = false;
+  options.title = title;
+  if (model.periodic_x) options.periodic = std::make_pair(model.x_min, model.x_max);
+  const RenderResult result = render_run(dir, options);
+  SG_VERIFY(result.images.size() == 1,
+            "sample picture: render drew " << result.images.size() << " images, expected 1");
+  const fs::path png = dir / "sample.png";
+  fs::rename(result.images.front(), png);
+  return png;
+}
+
+}  // namespace sg
