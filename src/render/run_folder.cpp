@@ -18,6 +18,12 @@ std::vector<std::string> body_names(const ScenarioDef& s) {
     for (int i = 0; i < s.shear_cell->grains; ++i)
       names.push_back("grain_" + std::to_string(i));
   }
+  if (s.compaction_box) {  // scenario/compaction_box.cpp: the four walls, then grain_<i>
+    for (const char* wall : {"bottom", "left", "right", "lid"})
+      names.push_back(wall);
+    for (int i = 0; i < s.compaction_box->grains; ++i)
+      names.push_back("grain_" + std::to_string(i));
+  }
   for (const WallDef& w : s.walls)
     names.push_back(w.name);
   return names;
@@ -29,6 +35,8 @@ void grain_material_parameters(const ScenarioDef& s, RunInfo& info) {
   std::string material;
   if (s.shear_cell) {
     material = s.shear_cell->grain_material;
+  } else if (s.compaction_box) {
+    material = s.compaction_box->grain_material;  // empty when every component names its own
   } else {
     for (const GrainSpec& g : s.grains) {
       if (g.rigid) continue;
@@ -99,6 +107,7 @@ RunInfo read_run_info(const std::filesystem::path& run_dir) {
   info.body_names = body_names(s);
   for (const WallDef& w : s.walls)
     info.walls.push_back(w.name);
+  if (s.compaction_box) info.walls.insert(info.walls.end(), {"bottom", "left", "right", "lid"});
   info.shear_cell = s.shear_cell.has_value();
   if (s.shear_cell) {
     info.periodic = std::make_pair(0.0, s.shear_cell->length);
