@@ -119,8 +119,21 @@ double contact_frequency(const Model& model, const Body& body, double k) {
     // translation and rotation: k_eff / m and k_eff r_max^2 / I
     return std::sqrt(2.0 * k * length / model.rigid.mass[r] * std::max(1.0, max_arm2 / radius2));
   }
-  double omega2 = 0.0;
+  // Deformable body. Contour node I (tributary length l_I) sits at x_I = sum_J N_J(X_I) u_J
+  // (its MLS row r_I, model.node_rows), so a penalty spring on it is the rank-one stiffness
+  // 2 k l_I r_I r_I^T on the parameters (both passes), in x and in y alike (k bounds both
+  // k_n and k_t). With the whole contour loaded against an immovable partner,
+  //   K_c = sum_I 2 k l_I r_I r_I^T,
+  // and this body's own contact frequency is sqrt(lambda_max(M^-1/2 K_c M^-1/2)), found by
+  // power iteration on the boundary rows. The per-node value 2 k l_I / m_I (the row taken
+  // as a Kronecker delta) is kept as a floor: MLS rows spread the force to interior
+  // parameters, which can lower the frequency below the nodal one, and this estimate must
+  // never give a larger step than the nodal one did.
   const int count = body.boundary_count();
+  const auto o = static_cast<std::size_t>(body.node_begin);
+  const auto n_nodes = static_cast<std::size_t>(body.node_count());
+  std::vector<double> weight(static_cast<std::size_t>(count));
+  double omega2 = 0.0;
   for (int i = 0; i < count; ++i) {
     const auto a = static_cast<std::size_t>(body.node_begin + i);
     const auto prev = static_cast<std::size_t>(body.node_begin + (i + count - 1) % count);
@@ -132,23 +145,92 @@ double contact_frequency(const Model& model, const Body& body, double k) {
     const double l =
         0.5 * (std::hypot(n.ref_x[next] + shift_next - n.ref_x[a], n.ref_y[next] - n.ref_y[a]) +
                std::hypot(n.ref_x[prev] + shift_prev - n.ref_x[a], n.ref_y[prev] - n.ref_y[a]));
+    weight[static_cast<std::size_t>(i)] = 2.0 * k * l;
     omega2 = std::max(omega2, 2.0 * k * l * n.inverse_mass[a]);
   }
-  return std::sqrt(omega2);
+  const ShapeRows& rows = model.node_rows;
+  std::vector<double> p(n_nodes), y(n_nodes);
+  for (std::size_t j = 0; j < n_nodes; ++j)
+    p[j] = static_cast<double>((j * 7919) % 13) / 13.0 - 0.5;
+  double lambda = 0.0;
+  for (int it = 0; it < 100; ++it) {
+    double norm = 0.0;
+    for (double v : p)
+      norm += v * v;
+    norm = std::sqrt(norm);
+    if (norm == 0.0) break;
+    std::fill(y.begin(), y.end(), 0.0);
+    for (int i = 0; i < count; ++i) {
+      const auto row = static_cast<std::size_t>(body.node_begin + i);
+      const auto begin = static_cast<std::size_t>(rows.offset[row]);
+      const auto end = static_cast<std::size_t>(rows.offset[row + 1]);
+      double r_dot = 0.0;  // r_I . M^-1/2 p
+      for (std::size_t e = begin; e < end; ++e) {
+        const auto j = static_cast<std::size_t>(rows.node[e]);
+        r_dot += rows.value[e] * std::sqrt(n.inverse_mass[o + j]) * p[j];
+      }
+      const double scaled = weight[static_cast<std::size_t>(i)] * r_dot / norm;
+      for (std::size_t e = begin; e < end; ++e) {
+        const auto j = static_cast<std::size_t>(rows.node[e]);
+        y[j] += rows.value[e] * std::sqrt(n.inverse_mass[o + j]) * scaled;
+      }
+    }
+    double rayleigh = 0.0;
+    for (std::size_t j = 0; j < n_nodes; ++j)
+      rayleigh += y[j] * p[j] / norm;
+    lambda = rayleigh;
+    p.swap(y);
+  }
+  return std::sqrt(std::max(omega2, lambda));
 }
 
 }  // namespace
 
 std::vector<double> estimate_body_frequencies(const Model& model, double contact_stiffness) {
   // Bodies are independent: estimate in parallel, each into its own slot.
-  std::vector<double> omega(model.bodies.size(), 0.0);
-  parallel_for(static_cast<int>(model.bodies.size()), [&](int b) {
+  const std::size_t count = model.bodies.size();
+  std::vector<double> body_omega(count, 0.0), contact_omega(count, 0.0);
+  parallel_for(static_cast<int>(count), [&](int b) {
     const Body& body = model.bodies[static_cast<std::size_t>(b)];
-    const double body_omega =
+    body_omega[static_cast<std::size_t>(b)] =
         body.kind == BodyKind::deformable ? estimate_max_frequency(model, b) : 0.0;
-    const double contact_omega = contact_frequency(model, body, contact_stiffness);
-    omega[static_cast<std::size_t>(b)] = std::hypot(body_omega, contact_omega);
+    contact_omega[static_cast<std::size_t>(b)] = contact_frequency(model, body, contact_stiffness);
   });
+  // The partner's side of a contact. With D the contact springs' (weighted) gap rows, the
+  // contact stiffness is K_c = D^T D and, split by body, D = [D_A D_B]:
+  //   lambda_max(M^-1/2 K_c M^-1/2) = lambda_max(D_A M_A^-1 D_A^T + D_B M_B^-1 D_B^T)
+  //                                 <= omega_A^2 + omega_B^2,
+  // omega_A being A's contact frequency with B held fixed (contact_frequency above). Two
+  // deformable bodies bonded face to face with matching nodes reach the bound: the relative
+  // mode of two boundary nodes of mass m on a spring 2 k l has omega^2 = 2 k l (2 / m), twice
+  // what one side alone gives. The partner is unknown before contacts form, so each body takes
+  // the largest contact frequency of any other body that can move: a rigid body whose three
+  // degrees of freedom are all velocity-driven (a fixed wall, a driven plate) has no partner
+  // side (its own value, kept for the minimum as before, is not a frequency of the system).
+  double first = 0.0, second = 0.0;
+  std::size_t first_body = count;
+  for (std::size_t b = 0; b < count; ++b) {
+    const Body& body = model.bodies[b];
+    if (body.kind == BodyKind::rigid) {
+      const RigidDrive& drive = model.rigid.drive[static_cast<std::size_t>(body.rigid_index)];
+      if (drive.mode[0] == DriveMode::velocity && drive.mode[1] == DriveMode::velocity &&
+          drive.mode[2] == DriveMode::velocity)
+        continue;
+    }
+    if (contact_omega[b] > first) {
+      second = first;
+      first = contact_omega[b];
+      first_body = b;
+    } else {
+      second = std::max(second, contact_omega[b]);
+    }
+  }
+  std::vector<double> omega(count, 0.0);
+  for (std::size_t b = 0; b < count; ++b) {
+    const double partner = b == first_body ? second : first;
+    omega[b] = std::sqrt(body_omega[b] * body_omega[b] + contact_omega[b] * contact_omega[b] +
+                         partner * partner);
+  }
   return omega;
 }
 

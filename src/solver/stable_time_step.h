@@ -27,8 +27,9 @@ double estimate_max_frequency(const Model& model, BodyId body, int iterations = 
 double wave_speed_frequency_bound(const Model& model, BodyId body);
 
 // omega_max of every body, as estimate_stable_time_step combines them: a deformable body's
-// power-iteration frequency with its contour's contact frequency, a rigid body's contact
-// frequency alone (0 without contacts). Deterministic, parallel over bodies.
+// power-iteration frequency with its contour's contact frequency and its partner's (see
+// below), a rigid body's contact frequencies alone (0 without contacts). Deterministic,
+// parallel over bodies.
 std::vector<double> estimate_body_frequencies(const Model& model, double contact_stiffness);
 
 // The stiffness-proportional damping coefficient alpha of a body (0 for rigid bodies).
@@ -41,10 +42,13 @@ struct StableStep {
   bool damping_limited = false;  // xi > 1 for that body: the damping sets the limit
 };
 // `contact_stiffness`: the largest contact penalty k (force / length^2), 0 without contacts.
-// A contour node of mass m and tributary length l on a two-sided contact (two passes) adds a
-// spring 2 k l: its frequency sqrt(2 k l / m) combines with the body's as
-// sqrt(omega_body^2 + omega_contact^2) (a bound for springs in parallel). Free rigid bodies
-// are bounded the same way with their whole contour.
+// Contact part of a deformable body's frequency: its whole contour bonded (both passes,
+// springs 2 k l_I on each node's MLS row) against an immovable partner, by power iteration on
+// the boundary rows, never below the per-node value sqrt(2 k l_I / m_I); a rigid body's from
+// its whole contour. A contact also moves the partner: the two sides add in omega^2 (see
+// estimate_body_frequencies), so each body adds the largest contact frequency of any other
+// body that is not fully velocity-driven. All terms combine in omega^2 (springs in
+// parallel): omega^2 = omega_body^2 + omega_contact^2 + omega_partner^2.
 StableStep estimate_stable_time_step(const Model& model, double safety,
                                      double contact_stiffness = 0.0);
 

@@ -121,7 +121,7 @@ void expect_identical(const StateSnapshot& a, const StateSnapshot& b) {
 }
 
 constexpr int kCaptureStep = 150;
-constexpr int kTotalSteps = 400;
+constexpr int kTotalSteps = 560;
 
 // Steps kCaptureStep .. kTotalSteps, recording the broad phase's candidate list after each.
 std::vector<std::vector<ContactCandidate>> continue_run(Scene& scene, double dt) {
