@@ -40,9 +40,10 @@ double mass_scale_for_step(double omega, double alpha, double target_step);
 
 // Scales the bodies of `model` whose critical step (safety x critical step, as the step
 // controller computes it with `contact_stiffness`) is below `target_step`, once, on the
-// current (normally the initial) state. Deterministic: the same model gives the same factors
-// whatever the thread count, so a resumed run rebuilds the same masses. Throws sg::Error
-// when target_step is not positive or a body was scaled already.
+// current (normally the initial) state; repeated (at most 4 passes) while a body's estimate,
+// which includes its contact partners' terms, is still below the target. Deterministic: the same
+// model gives the same factors whatever the thread count, so a resumed run rebuilds the same
+// masses. Throws sg::Error when target_step is not positive or a body was scaled already.
 MassScalingReport apply_mass_scaling(Model& model, double target_step, double safety,
                                      double contact_stiffness);
 
