@@ -30,8 +30,13 @@ int main(int argc, char** argv) {
       "  softgrain run examples/free-grains.toml            simulate; outputs in out/<name>/\n"
       "  softgrain run examples/free-grains.toml --threads 2\n"
       "  softgrain info examples/free-grains.toml           bodies, nodes, step, memory\n"
+      "  softgrain generate examples/compaction-box.toml    build the sample only: "
+      "out/<name>/sample/\n"
       "Each subcommand has its own --help.");
   app.require_subcommand(1);
+  // Global options (--threads) are accepted after the subcommand too: subcommands created
+  // below inherit this and pass options they do not know to the main app.
+  app.fallthrough();
   GlobalOptions options;
   app.add_option("--threads", options.threads, "OpenMP threads (default: all cores)")
       ->check(CLI::NonNegativeNumber);
