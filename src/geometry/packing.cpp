@@ -561,4 +561,17 @@ PackingResult pack_grains(const std::vector<GrainDef>& grains, const PackingDef&
   return pack_grains(contours, def, seed);
 }
 
+double mixture_grain_size(const std::vector<GrainComponentDef>& components,
+                          const std::string& what) {
+  double weighted = 0.0, total = 0.0;
+  for (const GrainComponentDef& c : components) {
+    const SizeRangeDef& range =
+        c.shape.kind == GrainShapeKind::ellipse ? c.shape.minor_axis : c.shape.diameter;
+    weighted += c.number_fraction * 0.5 * (range.min + range.max);
+    total += c.number_fraction;
+  }
+  SG_VERIFY(total > 0.0, what << ": no grain components, or their fractions sum to zero");
+  return weighted / total;
+}
+
 }  // namespace sg

@@ -68,6 +68,12 @@ struct MixtureDef {
   std::vector<GrainComponentDef> components;
 };
 
+// A typical grain size of a mixture (length): the number-weighted mean of the components' mid
+// sizes (disc or Fourier diameter, ellipse short axis). Sets packing clearances. Throws
+// sg::Error naming `what` when the fractions sum to zero.
+double mixture_grain_size(const std::vector<GrainComponentDef>& components,
+                          const std::string& what);
+
 // A generated grain, in its local frame (centroid at the origin).
 struct GrainDef {
   Polygon contour;               // CCW, simple, centroid at (0, 0)

@@ -43,15 +43,7 @@ SizeRangeDef read_size_range(const TomlReader& t, const char* key, SizeLaw law) 
 }  // namespace
 
 double compaction_box_grain_size(const CompactionBoxDef& def) {
-  double weighted = 0.0, total = 0.0;
-  for (const GrainComponentDef& c : def.components) {
-    const SizeRangeDef& range =
-        c.shape.kind == GrainShapeKind::ellipse ? c.shape.minor_axis : c.shape.diameter;
-    weighted += c.number_fraction * 0.5 * (range.min + range.max);
-    total += c.number_fraction;
-  }
-  SG_VERIFY(total > 0.0, "compaction box: no grain components, or their fractions sum to zero");
-  return weighted / total;
+  return mixture_grain_size(def.components, "compaction box");
 }
 
 MixtureDef compaction_box_mixture(const CompactionBoxDef& def, double spacing) {

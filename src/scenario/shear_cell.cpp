@@ -60,15 +60,7 @@ void add_grains(Model& model, const std::vector<GrainDef>& grains, const Packing
 
 double shear_cell_grain_size(const ShearCellDef& def) {
   if (def.components.empty()) return 0.5 * (def.diameter.min + def.diameter.max);
-  double weighted = 0.0, total = 0.0;
-  for (const GrainComponentDef& c : def.components) {
-    const SizeRangeDef& range =
-        c.shape.kind == GrainShapeKind::ellipse ? c.shape.minor_axis : c.shape.diameter;
-    weighted += c.number_fraction * 0.5 * (range.min + range.max);
-    total += c.number_fraction;
-  }
-  SG_VERIFY(total > 0.0, "shear cell: the component fractions sum to zero");
-  return weighted / total;
+  return mixture_grain_size(def.components, "shear cell");
 }
 
 double servo_damping_estimate(double young, double poisson, double height, double length,

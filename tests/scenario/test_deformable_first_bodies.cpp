@@ -15,6 +15,7 @@
 #include "io/run.h"
 #include "scenario/scenario.h"
 #include "scenes/scenario_files.h"
+#include "scenes/series_text.h"
 #include "scenes/shear_cell_scenario.h"
 
 namespace sg {
@@ -50,36 +51,10 @@ std::string cell_scenario(const std::string& name) {
   return scenes::replace_once(text, "[shear_cell]\n", keys.str());
 }
 
-struct Series {
-  std::vector<std::string> columns;
-  std::vector<std::vector<double>> rows;
-  std::string text;
-  std::size_t column(const std::string& name) const {
-    for (std::size_t i = 0; i < columns.size(); ++i)
-      if (columns[i] == name) return i;
-    ADD_FAILURE() << "no column " << name;
-    return 0;
-  }
-};
+using Series = scenes::SeriesText;
 
 Series read_series(const fs::path& file) {
-  Series s;
-  std::ifstream in(file);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  s.text = buffer.str();
-  std::istringstream lines(s.text);
-  std::string line, cell;
-  std::getline(lines, line);
-  for (std::istringstream header(line); std::getline(header, cell, ',');)
-    s.columns.push_back(cell);
-  while (std::getline(lines, line)) {
-    std::vector<double> row;
-    for (std::istringstream fields(line); std::getline(fields, cell, ',');)
-      row.push_back(std::stod(cell));
-    s.rows.push_back(row);
-  }
-  return s;
+  return scenes::read_series_text(file);
 }
 
 RunSummary run(const fs::path& dir, int threads, long stop_after = -1, bool resume = false) {

@@ -25,6 +25,7 @@
 #include "io/run.h"
 #include "scenario/scenario.h"
 #include "scenes/scenario_files.h"
+#include "scenes/series_text.h"
 #include "scenes/shear_cell_scenario.h"
 
 namespace sg {
@@ -47,17 +48,7 @@ std::string cell_scenario() {
   return scenes::shear_cell_scenario(c);
 }
 
-struct Series {
-  std::vector<std::string> columns;
-  std::vector<std::vector<double>> rows;
-  std::string text;
-  std::size_t column(const std::string& name) const {
-    for (std::size_t i = 0; i < columns.size(); ++i)
-      if (columns[i] == name) return i;
-    ADD_FAILURE() << "no column " << name;
-    return 0;
-  }
-};
+using Series = scenes::SeriesText;
 
 Series run_cell(int threads) {
   const fs::path dir = scenes::process_temp_dir("cell_" + std::to_string(threads));
@@ -68,22 +59,7 @@ Series run_cell(int threads) {
   run_scenario(load_scenario(dir / "cell.toml"), options);
   omp_set_num_threads(1);
 
-  Series s;
-  std::ifstream in(dir / "out" / "cell" / "series.csv");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  s.text = buffer.str();
-  std::istringstream lines(s.text);
-  std::string line, cell;
-  std::getline(lines, line);
-  for (std::istringstream header(line); std::getline(header, cell, ',');)
-    s.columns.push_back(cell);
-  while (std::getline(lines, line)) {
-    std::vector<double> row;
-    for (std::istringstream fields(line); std::getline(fields, cell, ',');)
-      row.push_back(std::stod(cell));
-    s.rows.push_back(row);
-  }
+  Series s = scenes::read_series_text(dir / "out" / "cell" / "series.csv");
   fs::remove_all(dir);
   return s;
 }
