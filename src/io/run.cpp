@@ -203,17 +203,25 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
   // its driven back face (what a load cell there measures), which balances the layer's force
   // on the strip up to the strip's inertia (zero on average in a steady state). Its position
   // columns: the mean physical position of the back-face nodes.
+  // Weights of the driven strips (physical mass: gravity acts on it, solver/mass_scaling.h),
+  // fixed for the run.
+  std::vector<Vec2> strip_weight(model.bodies.size(), Vec2::Zero());
+  for (BodyId b : driven) {
+    const Body& body = model.bodies[static_cast<std::size_t>(b)];
+    if (body.kind == BodyKind::rigid) continue;
+    double mass = 0.0;
+    for (int i = body.node_begin; i < body.node_end; ++i)
+      mass += model.nodes.mass[static_cast<std::size_t>(i)];
+    strip_weight[static_cast<std::size_t>(b)] = mass / body.mass_scale * model.gravity;
+  }
   auto driven_force = [&](BodyId b) -> Vec2 {
     const Body& body = model.bodies[static_cast<std::size_t>(b)];
     if (body.kind == BodyKind::rigid) {
       const auto r = static_cast<std::size_t>(body.rigid_index);
       return Vec2(model.rigid.fx[r], model.rigid.fy[r]);
     }
-    double mass = 0.0;  // physical mass: gravity acts on it (solver/mass_scaling.h)
-    for (int i = body.node_begin; i < body.node_end; ++i)
-      mass += model.nodes.mass[static_cast<std::size_t>(i)];
-    const Vec2 weight = mass / body.mass_scale * model.gravity;
-    return -model.node_drives[static_cast<std::size_t>(body.node_drive)].reaction - weight;
+    return -model.node_drives[static_cast<std::size_t>(body.node_drive)].reaction -
+           strip_weight[static_cast<std::size_t>(b)];
   };
   auto driven_position = [&](BodyId b) -> Vec2 {
     const Body& body = model.bodies[static_cast<std::size_t>(b)];

@@ -130,8 +130,8 @@ struct NodeState {
   std::vector<double> viscous_fx, viscous_fy;  // its bulk-damping part (energy bookkeeping)
   std::vector<double> mass;                    // lumped mass rho * integral of N_I
   std::vector<double> inverse_mass;
-  // Index into Model::node_drives of the drive that owns the node, or -1 (cold: read in the
-  // update loop as a rarely taken branch).
+  // Index into Model::node_drives of the drive that owns the node, or -1 (read in the update
+  // loop only for bodies with Body::node_drive >= 0).
   std::vector<int> drive;
 
   std::size_t size() const { return ref_x.size(); }

@@ -38,19 +38,7 @@ std::vector<GrainDef> regenerated_grains(const ScenarioDef& s, MixtureDef& mixtu
     return generate_grains(mixture, box->grains, box->seed);
   }
   if (const auto& cell = s.shear_cell) {
-    // As scenario/shear_cell.cpp builds it: the components, or one disc component of
-    // `diameter`; contour spacing = the node spacing. The area check below catches a drift.
-    if (cell->components.empty()) {
-      GrainComponentDef c;
-      c.name = "discs";
-      c.shape.kind = GrainShapeKind::disc;
-      c.shape.diameter = cell->diameter;
-      mixture.components.push_back(c);
-    } else {
-      mixture.components = cell->components;
-    }
-    for (GrainComponentDef& c : mixture.components)
-      c.shape.contour_spacing = h;
+    mixture = shear_cell_mixture(*cell, h);
     return generate_grains(mixture, cell->grains, cell->seed);
   }
   return {};

@@ -17,23 +17,6 @@ PiecewiseLinear switch_at(double t1, double before, double after) {
   return PiecewiseLinear{{0.0, t1, t1 * 1.001}, {before, before, after}};
 }
 
-// The mixture to generate: the components, or one disc component of `diameter`.
-MixtureDef shear_cell_mixture(const ShearCellDef& def, double contour_spacing) {
-  MixtureDef mixture;
-  if (def.components.empty()) {
-    GrainComponentDef component;
-    component.shape.kind = GrainShapeKind::disc;
-    component.shape.diameter = def.diameter;
-    component.material.clear();
-    mixture.components.push_back(component);
-  } else {
-    mixture.components = def.components;
-  }
-  for (GrainComponentDef& c : mixture.components)
-    c.shape.contour_spacing = contour_spacing;
-  return mixture;
-}
-
 MaterialId material_by_name(const Model& model, const std::string& name) {
   for (std::size_t i = 0; i < model.material_defs.size(); ++i)
     if (model.material_defs[i].name == name) return static_cast<MaterialId>(i);
@@ -57,6 +40,22 @@ void add_grains(Model& model, const std::vector<GrainDef>& grains, const Packing
 }
 
 }  // namespace
+
+MixtureDef shear_cell_mixture(const ShearCellDef& def, double contour_spacing) {
+  MixtureDef mixture;
+  if (def.components.empty()) {
+    GrainComponentDef component;
+    component.shape.kind = GrainShapeKind::disc;
+    component.shape.diameter = def.diameter;
+    component.material.clear();
+    mixture.components.push_back(component);
+  } else {
+    mixture.components = def.components;
+  }
+  for (GrainComponentDef& c : mixture.components)
+    c.shape.contour_spacing = contour_spacing;
+  return mixture;
+}
 
 double shear_cell_grain_size(const ShearCellDef& def) {
   if (def.components.empty()) return 0.5 * (def.diameter.min + def.diameter.max);

@@ -76,6 +76,10 @@ struct ShearCellInfo {
 // 001/002.
 double shear_cell_grain_size(const ShearCellDef& def);
 
+// The mixture add_shear_cell generates: the components, or one disc component of `diameter`;
+// contour spacing = `contour_spacing`.
+MixtureDef shear_cell_mixture(const ShearCellDef& def, double contour_spacing);
+
 // Critical damping of the servo-loaded top (mass m) on the layer: c = 2 zeta sqrt(k_eff m)
 // with zeta = 1, and k_eff the stiffness of the layer and of the contacts with the top, in
 // series (they carry the same force):

@@ -149,9 +149,11 @@ double contact_frequency(const Model& model, const Body& body, double k) {
     omega2 = std::max(omega2, 2.0 * k * l * n.inverse_mass[a]);
   }
   const ShapeRows& rows = model.node_rows;
-  std::vector<double> p(n_nodes), y(n_nodes);
-  for (std::size_t j = 0; j < n_nodes; ++j)
+  std::vector<double> p(n_nodes), y(n_nodes), inverse_root_mass(n_nodes);
+  for (std::size_t j = 0; j < n_nodes; ++j) {
     p[j] = static_cast<double>((j * 7919) % 13) / 13.0 - 0.5;
+    inverse_root_mass[j] = std::sqrt(n.inverse_mass[o + j]);
+  }
   double lambda = 0.0;
   for (int it = 0; it < 100; ++it) {
     double norm = 0.0;
@@ -167,12 +169,12 @@ double contact_frequency(const Model& model, const Body& body, double k) {
       double r_dot = 0.0;  // r_I . M^-1/2 p
       for (std::size_t e = begin; e < end; ++e) {
         const auto j = static_cast<std::size_t>(rows.node[e]);
-        r_dot += rows.value[e] * std::sqrt(n.inverse_mass[o + j]) * p[j];
+        r_dot += rows.value[e] * inverse_root_mass[j] * p[j];
       }
       const double scaled = weight[static_cast<std::size_t>(i)] * r_dot / norm;
       for (std::size_t e = begin; e < end; ++e) {
         const auto j = static_cast<std::size_t>(rows.node[e]);
-        y[j] += rows.value[e] * std::sqrt(n.inverse_mass[o + j]) * scaled;
+        y[j] += rows.value[e] * inverse_root_mass[j] * scaled;
       }
     }
     double rayleigh = 0.0;
