@@ -138,8 +138,8 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
   const TomlDocument document(file);
   const TomlReader root = document.root();
   root.reject_unknown_keys({"name", "time", "output", "discretization", "physics", "materials",
-                            "grains", "walls", "contact_laws", "contact", "periodic",
-                            "shear_cell", "compaction_box"});
+                            "grains", "walls", "contact_laws", "contact", "periodic", "shear_cell",
+                            "compaction_box"});
   ScenarioDef s;
   s.source = file;
   s.name = root.string("name", file.stem().string());
