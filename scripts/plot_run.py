@@ -16,6 +16,8 @@ are there (otherwise it says why and goes on):
                        (summary.json)
   agglomerate_pdfs.png grain-weighted PDFs of omega~, diameter and lifetime of the
                        agglomerates (agglomerate_pdfs.csv)
+  compaction.png       compaction-box runs only: solid fraction against lid stress, and both
+                       against time (compaction.csv); nothing said for other runs
 
 Needs numpy and matplotlib (Debian: python3-numpy, python3-matplotlib). Each picture is
 written to a temporary file and renamed, so a reader never sees half a PNG. Exit status 0
@@ -222,6 +224,35 @@ def plot_agglomerates(analysis_dir):
     return save(fig, os.path.join(analysis_dir, "agglomerate_pdfs.png")), None
 
 
+def plot_compaction(analysis_dir):
+    path = os.path.join(analysis_dir, "compaction.csv")
+    if not os.path.exists(path):
+        return None, None  # not a compaction box: nothing to draw, nothing to say
+    c = read_csv(path)
+    t = numbers(path, c, "time")
+    stress = numbers(path, c, "lid_stress")
+    phi = numbers(path, c, "solid_fraction")
+    fig, (a, b) = plt.subplots(1, 2, figsize=(10, 4.2))
+    a.plot(stress, phi, "-", color="tab:blue", lw=1.2)
+    a.plot(stress[:1], phi[:1], "o", color="tab:green", ms=5, label=f"start: {phi[0]:.4f}")
+    a.plot(stress[-1:], phi[-1:], "s", color="tab:red", ms=5, label=f"end: {phi[-1]:.4f}")
+    a.set_xlabel("lid stress lid_fy / W (force/length)")
+    a.set_ylabel("solid fraction A / (W h)")
+    a.set_title("compaction curve", fontsize=10)
+    a.grid(alpha=0.3)
+    a.legend(fontsize=8, loc="lower right")
+    b.plot(t, phi, color="tab:blue", lw=1.2)
+    b.set_xlabel("time")
+    b.set_ylabel("solid fraction", color="tab:blue")
+    b2 = b.twinx()
+    b2.plot(t, stress, color="tab:orange", lw=1.0)
+    b2.set_ylabel("lid stress (force/length)", color="tab:orange")
+    b.set_title("solid fraction and lid stress against time", fontsize=10)
+    b.grid(alpha=0.3)
+    fig.tight_layout()
+    return save(fig, os.path.join(analysis_dir, "compaction.png")), None
+
+
 def main(argv):
     if len(argv) != 2:
         print(f"usage: {argv[0]} RUN_DIR", file=sys.stderr)
@@ -234,9 +265,11 @@ def main(argv):
         for draw in (lambda: plot_mu(run_dir, analysis_dir, summary),
                      lambda: plot_profiles(analysis_dir),
                      lambda: plot_energy(analysis_dir, summary),
-                     lambda: plot_agglomerates(analysis_dir)):
+                     lambda: plot_agglomerates(analysis_dir),
+                     lambda: plot_compaction(analysis_dir)):
             path, why = draw()
-            (written if path else skipped).append(path or why)
+            if path or why:
+                (written if path else skipped).append(path or why)
     except (PlotError, OSError, ValueError, KeyError) as e:
         print(f"plot_run.py: {e}", file=sys.stderr)
         return 1

@@ -1,5 +1,6 @@
 // softgrain analyze RUN_DIR: friction, energy budget, profiles, solid fraction and
-// agglomerates of a run folder -> RUN_DIR/analysis/summary.json, profiles.csv, a table.
+// agglomerates of a run folder, the compaction curve of a compaction box ->
+// RUN_DIR/analysis/summary.json, profiles.csv, compaction.csv, a table.
 #include <iostream>
 
 #include "command_registry.h"
@@ -52,8 +53,9 @@ const Registration registration(
        auto a = std::make_shared<AnalyzeArguments>();
        CLI::App* cmd = app.add_subcommand(
            "analyze",
-           "Friction, energy budget, profiles, agglomerates of a run folder; writes "
-           "RUN_DIR/analysis/summary.json and profiles.csv");
+           "Friction, energy budget, profiles, agglomerates of a run folder, the compaction "
+           "curve of a compaction box; writes RUN_DIR/analysis/summary.json, profiles.csv, "
+           "compaction.csv");
        cmd->add_option("run_dir", a->run_dir, "run folder (holds series.csv)")->required();
        cmd->add_option("--window", a->window,
                        "averaging window T0 T1 (default: MSER-5 steady state, or the whole run)")
@@ -77,7 +79,8 @@ const Registration registration(
            ->capture_default_str();
        CLI::Option* plots = cmd->add_flag(
            "--plots", a->plots,
-           "draw mu(t), profiles, energy shares, agglomerate PDFs into RUN_DIR/analysis/*.png "
+           "draw mu(t), profiles, energy shares, agglomerate PDFs, the compaction curve into "
+           "RUN_DIR/analysis/*.png "
            "(default: on when /usr/bin/python3 imports matplotlib)");
        cmd->add_flag("--no-plots", a->no_plots, "no plots")->excludes(plots);
        return std::function<int()>([a, &options] {
@@ -96,7 +99,9 @@ const Registration registration(
          o.agglomerates = !a->no_agglomerates;
          o.coherence_threshold = a->threshold;
          const AnalyzeResult r = analyze_run(a->run_dir, o);
-         std::cout << format_summary_table(r.summary) << "\nparameters:\n";
+         std::cout << format_summary_table(r.summary);
+         if (r.compaction) std::cout << format_compaction_table(*r.compaction);
+         std::cout << "\nparameters:\n";
          for (const ParameterSource& p : r.parameter_sources)
            std::cout << "  " << p.key << " = "
                      << (std::isfinite(p.value) ? std::to_string(p.value) : std::string("-"))
@@ -107,7 +112,8 @@ const Registration registration(
              std::cout << "  - " << n << "\n";
          }
          std::cout << "\nwritten: " << r.summary_path.string();
-         for (const auto* path : {&r.profile_path, &r.agglomerates_path, &r.agglomerate_pdfs_path})
+         for (const auto* path :
+              {&r.profile_path, &r.agglomerates_path, &r.agglomerate_pdfs_path, &r.compaction_path})
            if (!path->empty()) std::cout << ", " << path->filename().string();
          std::cout << "\n";
          return a->no_plots ? 0 : draw_plots(a->run_dir, a->plots);

@@ -208,8 +208,55 @@ void analyze_agglomerates(AnalyzeResult& r, std::span<const GrainSnapshot> frame
   }
 }
 
+// The compaction curve of a [compaction_box] run over every series.csv row; A(t) from the
+// snapshots' grains (walls removed), else the generated grains' areas. A failure is a note.
+void analyze_compaction(AnalyzeResult& r, const Series& series, const CompactionBoxGeometry& box,
+                        std::span<const GrainSnapshot> snapshots, const fs::path& run_dir) {
+  std::vector<GrainAreaSample> areas;
+  for (const GrainSnapshot& snap : snapshots) {
+    if (snap.size() == 0) continue;
+    double area = 0.0;
+    for (const double a : snap.area)
+      area += a;
+    areas.push_back({snap.time, area});
+  }
+  const std::string source =
+      areas.empty()
+          ? "the generated grains' contour areas, constant (no grains/*.csv: a deformable "
+            "grain's change of area is not seen)"
+          : "grains/*.csv: sum of the grains' current contour areas, linear in time between "
+            "the " +
+                std::to_string(areas.size()) + " snapshots";
+  // The snapshots must hold the grains and only them: at t = 0 their area is the generated one.
+  if (!areas.empty() && areas.front().time == 0.0 && std::isfinite(box.generated_grain_area) &&
+      !(std::abs(areas.front().area - box.generated_grain_area) <= 1e-9 * box.generated_grain_area))
+    r.notes.push_back("compaction: grains/*.csv at t = 0 hold grain area " +
+                      number(areas.front().area) + ", the scenario's grains " +
+                      number(box.generated_grain_area) + " (walls not told apart?)");
+  try {
+    CompactionCurve curve =
+        compute_compaction_curve(series, box, areas, box.generated_grain_area, source);
+    r.compaction_path = run_dir / "analysis" / "compaction.csv";
+    write_compaction_csv(r.compaction_path.string(), curve);
+    r.compaction = std::move(curve);
+  } catch (const Error& e) {
+    r.compaction.reset();
+    r.compaction_path.clear();
+    r.notes.push_back(std::string("compaction curve not computed: ") + e.what());
+  }
+}
+
 std::string json_document(const AnalyzeResult& r, const fs::path& run_dir) {
   nlohmann::ordered_json doc = nlohmann::ordered_json::parse(summary_json(r.summary));
+  if (r.compaction) {
+    for (const SummaryEntry& e : compaction_summary_entries(*r.compaction)) {
+      nlohmann::ordered_json q;
+      q["value"] = e.value;
+      q["unit"] = e.unit;
+      q["definition"] = e.definition;
+      doc["quantities"][e.key] = std::move(q);
+    }
+  }
   doc["run"] = fs::absolute(run_dir).lexically_normal().string();
   nlohmann::ordered_json params = nlohmann::ordered_json::object();
   for (const ParameterSource& p : r.parameter_sources) {
@@ -251,6 +298,15 @@ std::string json_document(const AnalyzeResult& r, const fs::path& run_dir) {
       ag["omega_tilde_pdf_outside"] = r.summary.agglomerates->omega_pdf.outside;
     }
     doc["agglomerates"] = std::move(ag);
+  }
+  if (r.compaction) {
+    nlohmann::ordered_json c;
+    c["file"] = "compaction.csv";
+    c["rows"] = r.compaction->points.size();
+    c["width"] = r.compaction->width;
+    c["lid_thickness"] = r.compaction->lid_thickness;
+    c["grain_area_source"] = r.compaction->area_source;
+    doc["compaction"] = std::move(c);
   }
   doc["notes"] = r.notes;
   return doc.dump(2) + "\n";
@@ -316,6 +372,15 @@ AnalyzeResult analyze_run(const fs::path& run_dir, const AnalyzeOptions& options
       snaps.all.empty() ? kNan : mean_equivalent_diameter(snaps.all.front());
   p.mean_diameter = pick(r, "mean_diameter", "length", g.mean_diameter, measured_diameter,
                          "grains/*.csv (mean 2 sqrt(area/pi), first snapshot)");
+
+  // --- Compaction box: the curve over the whole run.
+  if (run.compaction_box) {
+    analyze_compaction(r, series, *run.compaction_box, snaps.all, run_dir);
+  } else if (series.has(std::string(kCompactionLid) + "_fy")) {
+    notes.push_back(
+        "series.csv has a driven 'lid' but the run's scenario is not known as a "
+        "[compaction_box]: no compaction curve");
+  }
 
   // --- Driven bodies of the shear cell, window, friction.
   std::vector<DrivenBody> bodies;
@@ -433,7 +498,10 @@ AnalyzeResult analyze_run(const fs::path& run_dir, const AnalyzeOptions& options
     const double l0 = options.layer ? options.layer->first : ext0;
     const double l1 = options.layer ? options.layer->second : ext1;
     if (!std::isfinite(p.length)) {
-      notes.push_back("solid fraction null: L unknown (not a periodic run; pass --length)");
+      notes.push_back(run.compaction_box
+                          ? "solid fraction null: a layer's, for periodic runs; the box's is "
+                            "compaction_*_solid_fraction (analysis/compaction.csv)"
+                          : "solid fraction null: L unknown (not a periodic run; pass --length)");
     } else {
       try {
         s.solid_fraction = mean_solid_fraction(window_snaps, p.length, l0, l1);

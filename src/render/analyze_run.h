@@ -8,12 +8,17 @@
 //                        times from fields.pvd (same snapshot numbers)
 //   run.log           -> the scenario -> L, V, D, E, c, alpha; body names (walls and
 //                        driven bodies are removed from the grain snapshots)
+//   [compaction_box]  -> the compaction curve (analysis/compaction_curve.h): lid height,
+//                        lid stress and solid fraction per series.csv row, from the lid's
+//                        columns, the box width and the snapshots' grain areas
 //   options           -> override any of these
 //
 // Writes RUN_DIR/analysis/summary.json (analysis/summary.h layout, plus "parameters": each
 // run parameter with its value and where it came from, "agglomerates": how they were
 // detected, and "notes": what could not be computed and why), RUN_DIR/analysis/profiles.csv,
-// agglomerates.csv (one row per structure) and agglomerate_pdfs.csv, all atomically.
+// agglomerates.csv (one row per structure) and agglomerate_pdfs.csv, and for a compaction
+// box analysis/compaction.csv (its scalars compaction_* join summary.json's quantities, and
+// "compaction" says where A(t) came from), all atomically.
 //
 // agglomerates.csv columns: id (the space-time label), sign (+1 counter-clockwise, -1
 // clockwise = with the shear), first_frame, last_frame (indices into the window's
@@ -32,6 +37,7 @@
 #include <vector>
 
 #include "analysis/agglomerates.h"
+#include "analysis/compaction_curve.h"
 #include "analysis/profiles.h"
 #include "analysis/run_parameters.h"
 #include "analysis/summary.h"
@@ -65,6 +71,8 @@ struct AnalyzeResult {
   double agglomerate_threshold = 0.8;                // the |C| threshold used
   std::filesystem::path summary_path, profile_path;  // profile_path empty if none
   std::filesystem::path agglomerates_path, agglomerate_pdfs_path;  // empty if none
+  std::optional<CompactionCurve> compaction;                       // compaction-box runs only
+  std::filesystem::path compaction_path;                           // empty if none
 };
 
 struct RunInfo;

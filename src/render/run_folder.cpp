@@ -3,6 +3,8 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "geometry/packing.h"
+#include "geometry/polygon.h"
 #include "scenario/scenario.h"
 
 namespace sg {
@@ -109,6 +111,27 @@ RunInfo read_run_info(const std::filesystem::path& run_dir) {
     info.walls.push_back(w.name);
   if (s.compaction_box) info.walls.insert(info.walls.end(), {"bottom", "left", "right", "lid"});
   info.shear_cell = s.shear_cell.has_value();
+  if (const auto& box = s.compaction_box) {
+    // As add_compaction_box builds it: inner floor at y = 0, walls one mean grain size thick
+    // unless given, the grains regenerated from the mixture and seed (generate_grains is
+    // deterministic; packing moves them rigidly, so their areas are those of the run at t = 0).
+    CompactionBoxGeometry g;
+    g.width = box->width;
+    g.lid_thickness =
+        box->wall_thickness > 0.0 ? box->wall_thickness : compaction_box_grain_size(*box);
+    g.floor_y = 0.0;
+    const double h = s.discretization.mesh.spacing;
+    try {
+      double area = 0.0;
+      for (const GrainDef& grain :
+           generate_grains(compaction_box_mixture(*box, h), box->grains, box->seed))
+        area += signed_area(grain.contour);
+      g.generated_grain_area = area;
+    } catch (const Error& e) {  // a fallback only: the snapshots' areas are the measurement
+      info.notes.push_back(std::string("compaction box: grains not regenerated: ") + e.what());
+    }
+    info.compaction_box = g;
+  }
   if (s.shear_cell) {
     info.periodic = std::make_pair(0.0, s.shear_cell->length);
     info.parameters.length = s.shear_cell->length;

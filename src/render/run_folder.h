@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "analysis/compaction_curve.h"
 #include "analysis/run_parameters.h"
 
 namespace sg {
@@ -31,6 +32,9 @@ struct RunInfo {
   // ("bottom", "top", "grain_0" ...), then walls.
   std::vector<std::string> body_names;
   std::vector<std::string> walls;  // wall names (not grains)
+  // [compaction_box]: width, lid thickness, floor and the generated grains' area, as the
+  // builder (scenario/compaction_box.cpp) makes them; unset for other runs.
+  std::optional<CompactionBoxGeometry> compaction_box;
 };
 
 // Never throws for a missing or unreadable run.log or scenario: the reason lands in `note`.
