@@ -48,8 +48,9 @@ const Registration registration(
        CLI::App* sub = app.add_subcommand(
            "generate",
            "Build the sample as run would (same seed) and write <run folder>/sample/: "
-           "sample.vtu, sample.json (counts, solid fraction, sizes, roughness, smallest gap, "
-           "step, memory), sample.png");
+           "sample.vtu, sample.json (counts, solid fraction, sizes with their KS distance to "
+           "the requested law, roughness RMS and spectral slope, smallest gap, step, memory), "
+           "sample.png");
        sub->add_option("scenario", args->scenario, "scenario TOML file")->required();
        sub->add_option("-o,--output", args->output,
                        "output root folder (overrides [output] directory)");

@@ -86,6 +86,49 @@ RoughProfile make_rough_profile(const RoughSurfaceDef& def, std::uint64_t seed) 
   return profile;
 }
 
+std::vector<double> periodogram(const std::vector<double>& y) {
+  const std::size_t n = y.size();
+  std::vector<double> c(n), s(n);
+  for (std::size_t m = 0; m < n; ++m) {
+    c[m] = std::cos(2.0 * std::numbers::pi * static_cast<double>(m) / static_cast<double>(n));
+    s[m] = std::sin(2.0 * std::numbers::pi * static_cast<double>(m) / static_cast<double>(n));
+  }
+  std::vector<double> p(n / 2 + 1);
+  for (std::size_t k = 0; k <= n / 2 && n > 0; ++k) {
+    double re = 0.0, im = 0.0;
+    for (std::size_t j = 0; j < n; ++j) {
+      re += y[j] * c[(k * j) % n];
+      im -= y[j] * s[(k * j) % n];
+    }
+    p[k] = re * re + im * im;
+  }
+  return p;
+}
+
+SpectralSlopeFit fit_spectral_slope(const std::vector<double>& p, int k0, int k1) {
+  SG_VERIFY(k0 >= 1 && k0 < k1 && static_cast<std::size_t>(k1) < p.size(),
+            "spectral slope: modes [" << k0 << ", " << k1 << "] not within 1 .. " << p.size() - 1
+                                      << " with at least two modes");
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  const double n = k1 - k0 + 1;
+  for (int k = k0; k <= k1; ++k) {
+    const double power = p[static_cast<std::size_t>(k)];
+    SG_VERIFY(power > 0.0, "spectral slope: mode " << k << " carries no power (" << power << ")");
+    const double x = std::log(static_cast<double>(k)), v = std::log(power);
+    sx += x;
+    sy += v;
+    sxx += x * x;
+    sxy += x * v;
+  }
+  const double spread = sxx - sx * sx / n;  // sum (x - mean)^2
+  SpectralSlopeFit fit;
+  fit.slope = (sxy - sx * sy / n) / spread;
+  fit.standard_error_if_exponential = std::sqrt(std::numbers::pi * std::numbers::pi / 6.0 / spread);
+  fit.min_mode = k0;
+  fit.max_mode = k1;
+  return fit;
+}
+
 FirstBodyStrip make_first_body_strip(const RoughProfile& profile, FirstBodySide side, double mean_y,
                                      double thickness) {
   const int n = static_cast<int>(profile.heights.size());

@@ -48,6 +48,30 @@ struct RoughProfile {
 
 RoughProfile make_rough_profile(const RoughSurfaceDef& def, std::uint64_t seed);
 
+// --- Measuring a profile (tests and `softgrain generate`'s report).
+
+// Periodogram P_k = |Y_k|^2, Y_k = sum_j y_j exp(-2 pi i k j / N), k = 0 .. N/2, of N evenly
+// spaced samples of one period. A direct DFT (O(N^2), a cos/sin table), deliberately not the
+// synthesis code path of make_rough_profile, so that it can check it. P_k is proportional to
+// the PSD C(q_k) at q_k = 2 pi k / L.
+std::vector<double> periodogram(const std::vector<double>& heights);
+
+// Least-squares fit of ln P_k against ln k over the modes [min_mode, max_mode] (ln q_k differs
+// from ln k by a constant: same slope). A self-affine profile has C(q) ∝ q^-(1 + 2H).
+struct SpectralSlopeFit {
+  double slope = 0.0;
+  // The slope's standard error if ln P_k scattered like the log of an exponential variable
+  // (variance pi^2 / 6 per mode: the periodogram of a Gaussian process, as for
+  // RoughSpectrumSampling::gaussian); random-phase profiles lie on the law exactly.
+  double standard_error_if_exponential = 0.0;
+  int min_mode = 0, max_mode = 0;
+  double hurst() const { return -(1.0 + slope) / 2.0; }  // H from slope = -(1 + 2H)
+};
+
+// Throws sg::Error unless 1 <= min_mode < max_mode < power.size() and every P_k in the range
+// is positive.
+SpectralSlopeFit fit_spectral_slope(const std::vector<double>& power, int min_mode, int max_mode);
+
 enum class FirstBodySide {
   bottom,  // body below the gap, rough surface facing +y
   top,     // body above the gap, rough surface facing -y

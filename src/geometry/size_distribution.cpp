@@ -88,4 +88,24 @@ double size_variance(const SizeRangeDef& range) {
   return std::max(0.0, raw_moment(range, 2) - m * m);
 }
 
+double ks_statistic(std::vector<double> x, const SizeRangeDef& range) {
+  std::sort(x.begin(), x.end());
+  const double n = static_cast<double>(x.size());
+  double d = 0.0;
+  // The supremum is reached at a sample point, on one side of the jump of F_n there:
+  // F_n jumps from i/n to (i+1)/n at x_(i).
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double f = size_cdf(range, x[i]);
+    // A monodisperse law is a step at min, where F jumps 0 -> 1 together with F_n: the
+    // left limits agree as well.
+    const double f_left = range.min == range.max && x[i] == range.min ? 0.0 : f;
+    d = std::max({d, (static_cast<double>(i) + 1.0) / n - f, f_left - static_cast<double>(i) / n});
+  }
+  return d;
+}
+
+double ks_critical_value_5pct(std::size_t n) {
+  return n == 0 ? 0.0 : 1.36 / std::sqrt(static_cast<double>(n));
+}
+
 }  // namespace sg

@@ -63,4 +63,14 @@ double size_cdf(const SizeRangeDef& range, double d);
 double size_mean(const SizeRangeDef& range);
 double size_variance(const SizeRangeDef& range);
 
+// Kolmogorov-Smirnov statistic D = sup_d |F_n(d) - F(d)| of a sample against the law's CDF
+// (F_n the sample's empirical CDF), 0 for an empty sample. For a continuous law and n
+// independent draws, sqrt(n) D follows Kolmogorov's distribution as n grows: D exceeds
+// 1.36 / sqrt(n) with probability 5%, 1.628 / sqrt(n) with 1%. A monodisperse law (min == max)
+// is a step: D = 0 when every draw is that size.
+double ks_statistic(std::vector<double> sample, const SizeRangeDef& range);
+
+// The large-n critical value c_alpha / sqrt(n) for alpha = 5% (c = 1.358, often quoted 1.36).
+double ks_critical_value_5pct(std::size_t n);
+
 }  // namespace sg

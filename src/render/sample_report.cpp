@@ -12,6 +12,8 @@
 #include "contact/contact_system.h"
 #include "core/error.h"
 #include "geometry/packing.h"
+#include "geometry/rough_surface.h"
+#include "geometry/size_distribution.h"
 #include "io/atomic_file.h"
 #include "io/vtk_writer.h"
 #include "model/kinematics.h"
@@ -98,6 +100,41 @@ bool any_crossing(const std::vector<std::pair<Vec2, Vec2>>& sa,
     for (const auto& [b0, b1] : sb)
       if (segments_intersect(a0, a1, b0, b1)) return true;
   return false;
+}
+
+// The spectral slope of a first body's rough surface (its open contour, one period [x0,
+// x0 + L) of evenly spaced points in some order): periodogram of the heights in x order, fit
+// over every mode the generator fills (1 .. N/2 - 1: shear_cell builds its surfaces with the
+// default band of geometry/rough_surface.h).
+void measure_spectral_slope(const Polygon& surface, double period, double hurst,
+                            SurfaceRoughness& g) {
+  g.requested_hurst = hurst;
+  g.expected_slope = -(1.0 + 2.0 * hurst);
+  g.spectral_slope = g.measured_hurst = std::numeric_limits<double>::quiet_NaN();
+  std::vector<Vec2> points(surface.begin(), surface.end());
+  std::sort(points.begin(), points.end(),
+            [](const Vec2& a, const Vec2& b) { return a.x() < b.x(); });
+  const std::size_t n = points.size();
+  g.points = static_cast<int>(n);
+  if (n < 8) {
+    g.slope_note = "fewer than 8 surface points: no spectrum";
+    return;
+  }
+  const double dx = period / static_cast<double>(n);
+  for (std::size_t j = 0; j < n; ++j)
+    if (!(std::abs(points[j].x() - points[0].x() - static_cast<double>(j) * dx) <= 1e-9 * period)) {
+      g.slope_note = "surface points not evenly spaced over one period: no spectrum";
+      return;
+    }
+  std::vector<double> heights(n);
+  for (std::size_t j = 0; j < n; ++j)
+    heights[j] = points[j].y();
+  const SpectralSlopeFit fit =
+      fit_spectral_slope(periodogram(heights), 1, static_cast<int>(n / 2) - 1);
+  g.spectral_slope = fit.slope;
+  g.measured_hurst = fit.hurst();
+  g.slope_min_mode = fit.min_mode;
+  g.slope_max_mode = fit.max_mode;
 }
 
 std::string fixed(double v, int digits = 4) {
@@ -264,7 +301,16 @@ SampleReport measure_sample(const ScenarioDef& scenario, Model& model) {
       std::vector<double> y;
       for (const Vec2& v : surface)
         y.push_back(v.y());
-      r.roughness.push_back({name, scenario.shear_cell->roughness_rms, std_of(y)});
+      SurfaceRoughness g;
+      g.body = name;
+      g.requested_rms = scenario.shear_cell->roughness_rms;
+      g.measured_rms = std_of(y);
+      try {
+        measure_spectral_slope(surface, model.x_max - model.x_min, scenario.shear_cell->hurst, g);
+      } catch (const Error& e) {
+        g.slope_note = std::string("no spectrum: ") + e.what();
+      }
+      r.roughness.push_back(g);
     }
   }
   if (r.container_area > 0.0) r.solid_fraction = r.grain_area / r.container_area;
@@ -300,7 +346,8 @@ SampleReport measure_sample(const ScenarioDef& scenario, Model& model) {
                    : ellipse                              ? "long axis"
                                                           : "2 r_mean";
       // Ellipses: the long axis is the major-axis draw unless the ranges overlap and the
-      // draws were swapped (packing.h), so the law's moments are exact only without overlap.
+      // draws were swapped (packing.h), so the law's moments and KS distance are exact only
+      // without overlap.
       const SizeRangeDef& law = ellipse ? def.shape.major_axis : def.shape.diameter;
       s.count = static_cast<int>(drawn[c].size());
       s.requested_mean = size_mean(law);
@@ -308,6 +355,8 @@ SampleReport measure_sample(const ScenarioDef& scenario, Model& model) {
       s.drawn_mean = mean_of(drawn[c]);
       s.drawn_std = std_of(drawn[c]);
       s.area_diameter_mean = mean_of(area_diameter[c]);
+      s.ks_statistic = ks_statistic(drawn[c], law);
+      s.ks_critical_5pct = ks_critical_value_5pct(drawn[c].size());
       r.sizes.push_back(s);
     }
   }
@@ -377,13 +426,27 @@ std::string sample_json(const SampleReport& r) {
                      {"requested_std", s.requested_std},
                      {"drawn_mean", s.drawn_mean},
                      {"drawn_std", s.drawn_std},
-                     {"area_diameter_mean", s.area_diameter_mean}});
+                     {"area_diameter_mean", s.area_diameter_mean},
+                     {"ks_statistic", s.ks_statistic},
+                     {"ks_critical_5pct", s.ks_critical_5pct},
+                     {"ks_pass", s.ks_statistic <= s.ks_critical_5pct}});
   doc["sizes"] = sizes;
   if (!r.sizes_note.empty()) doc["sizes_note"] = r.sizes_note;
   json rough = json::array();
-  for (const SurfaceRoughness& s : r.roughness)
-    rough.push_back(
-        {{"body", s.body}, {"requested_rms", s.requested_rms}, {"measured_rms", s.measured_rms}});
+  auto number_or_null = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+  for (const SurfaceRoughness& s : r.roughness) {
+    json g = {{"body", s.body},
+              {"requested_rms", s.requested_rms},
+              {"measured_rms", s.measured_rms},
+              {"points", s.points},
+              {"spectral_slope", number_or_null(s.spectral_slope)},
+              {"expected_slope", s.expected_slope},
+              {"slope_modes", json::array({s.slope_min_mode, s.slope_max_mode})},
+              {"measured_hurst", number_or_null(s.measured_hurst)},
+              {"requested_hurst", s.requested_hurst}};
+    if (!s.slope_note.empty()) g["slope_note"] = s.slope_note;
+    rough.push_back(g);
+  }
   doc["roughness"] = rough;
   doc["time_step"] = {{"stable_step", r.stable_step},
                       {"damping_limited", r.damping_limited},
@@ -414,19 +477,29 @@ std::string sample_table(const SampleReport& r) {
       << r.gap_body_b << "' (no overlap)\n";
   if (!r.sizes.empty()) {
     s << "  sizes           component      quantity    count  requested mean/std  drawn mean/std"
-         "  area-equiv. d\n";
+         "  area-equiv. d  KS D (5% crit.)\n";
     for (const ComponentSizes& c : r.sizes)
       s << "                  " << std::left << std::setw(14)
         << (c.name + (c.rigid ? " (R)" : " (D)")) << " " << std::setw(11) << c.quantity << " "
         << std::right << std::setw(5) << c.count << "  " << std::setw(8) << fixed(c.requested_mean)
         << " / " << std::left << std::setw(7) << fixed(c.requested_std) << std::right << " "
         << std::setw(7) << fixed(c.drawn_mean) << " / " << std::left << std::setw(7)
-        << fixed(c.drawn_std) << std::right << " " << fixed(c.area_diameter_mean) << "\n";
+        << fixed(c.drawn_std) << std::right << " " << std::setw(13) << std::left
+        << fixed(c.area_diameter_mean) << std::right << "  " << fixed(c.ks_statistic, 3) << " ("
+        << fixed(c.ks_critical_5pct, 3) << ")\n";
   }
   if (!r.sizes_note.empty()) s << "  sizes           " << r.sizes_note << "\n";
-  for (const SurfaceRoughness& g : r.roughness)
+  for (const SurfaceRoughness& g : r.roughness) {
     s << "  roughness       " << g.body << ": RMS " << fixed(g.measured_rms) << " (requested "
-      << fixed(g.requested_rms) << ")\n";
+      << fixed(g.requested_rms) << ")";
+    if (std::isfinite(g.spectral_slope))
+      s << ", spectral slope " << fixed(g.spectral_slope, 6)
+        << " -> H = " << fixed(g.measured_hurst, 6) << " (requested " << fixed(g.requested_hurst)
+        << ")";
+    else
+      s << ", " << g.slope_note;
+    s << "\n";
+  }
   s << "  stable step     " << r.stable_step << " ("
     << (r.damping_limited ? "damping-limited" : "wave-speed-limited") << ", body '"
     << r.limiting_body << "'), " << r.steps << " steps\n";

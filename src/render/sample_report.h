@@ -10,8 +10,10 @@
 // areas and the container read off the built walls or first bodies; the size moments from the
 // generator's draws (regenerated with the builder's mixture and seed, and checked against the
 // built bodies' areas so a drift between the two is reported, not hidden), next to the moments
-// the requested law has exactly; the roughness RMS from the built first-body contours; the
-// smallest gap from the exact contours of every pair of bodies (periodic images included).
+// the requested law has exactly, and their Kolmogorov-Smirnov distance to the law; the
+// roughness RMS and the spectral slope (with the Hurst exponent it implies) from the built
+// first-body contours; the smallest gap from the exact contours of every pair of bodies
+// (periodic images included).
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -31,11 +33,23 @@ struct ComponentSizes {
   double drawn_mean = 0.0, drawn_std = 0.0;          // of the generator's draws
   // Mean of 2 sqrt(A / pi) over the built bodies of the component (A: contour area).
   double area_diameter_mean = 0.0;
+  // Kolmogorov-Smirnov D of the draws against the requested law (geometry/size_distribution.h
+  // ks_statistic) and the 5% critical value 1.36 / sqrt(count): D above it rejects the law at
+  // the 5% level (which a correct generator does for 1 sample in 20).
+  double ks_statistic = 0.0, ks_critical_5pct = 0.0;
 };
 
 struct SurfaceRoughness {
   std::string body;  // "bottom", "top"
   double requested_rms = 0.0, measured_rms = 0.0;
+  // Spectral slope of the built surface: least-squares slope of ln P_k against ln q_k over the
+  // modes [slope_min_mode, slope_max_mode] of its periodogram (geometry/rough_surface.h), the
+  // Hurst exponent it implies, H = -(1 + slope) / 2, and the requested one. NaN (null) when the
+  // surface is not sampled evenly (see slope_note).
+  double spectral_slope = 0.0, expected_slope = 0.0;
+  double measured_hurst = 0.0, requested_hurst = 0.0;
+  int points = 0, slope_min_mode = 0, slope_max_mode = 0;
+  std::string slope_note;
 };
 
 struct SampleReport {

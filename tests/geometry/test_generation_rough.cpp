@@ -14,48 +14,9 @@
 namespace sg {
 namespace {
 
-// Periodogram |Y_k|^2 of the samples for k = 0 .. N/2 (direct DFT, O(N^2): the test must
-// not share the generator's code path).
-std::vector<double> periodogram(const std::vector<double>& y) {
-  const std::size_t n = y.size();
-  std::vector<double> c(n), s(n);
-  for (std::size_t m = 0; m < n; ++m) {
-    c[m] = std::cos(2.0 * std::numbers::pi * static_cast<double>(m) / static_cast<double>(n));
-    s[m] = std::sin(2.0 * std::numbers::pi * static_cast<double>(m) / static_cast<double>(n));
-  }
-  std::vector<double> p(n / 2 + 1);
-  for (std::size_t k = 0; k <= n / 2; ++k) {
-    double re = 0.0, im = 0.0;
-    for (std::size_t j = 0; j < n; ++j) {
-      re += y[j] * c[(k * j) % n];
-      im -= y[j] * s[(k * j) % n];
-    }
-    p[k] = re * re + im * im;
-  }
-  return p;
-}
-
-struct Fit {
-  double slope, standard_error_if_exponential;
-};
-
-// Least-squares slope of ln P_k against ln k over [k0, k1], and the standard error that
-// slope would have if ln P_k scattered like the log of an exponential variable
-// (variance pi^2 / 6), the periodogram of a Gaussian process.
-Fit log_log_slope(const std::vector<double>& p, int k0, int k1) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double n = k1 - k0 + 1;
-  for (int k = k0; k <= k1; ++k) {
-    const double x = std::log(static_cast<double>(k)), y = std::log(p[static_cast<std::size_t>(k)]);
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-  }
-  const double spread = sxx - sx * sx / n;  // sum (x - mean)^2
-  return {(sxy - sx * sy / n) / spread,
-          std::sqrt(std::numbers::pi * std::numbers::pi / 6.0 / spread)};
-}
+// periodogram and fit_spectral_slope (geometry/rough_surface.h) are a direct DFT and a
+// least-squares fit, independent of the generator's synthesis; `softgrain generate` reports
+// the same measure of the built first bodies.
 
 double rms_of(const std::vector<double>& y) {
   double s = 0.0;
@@ -80,7 +41,7 @@ TEST_P(HurstTest, RandomPhaseProfileHasExactRmsMeanAndSlope) {
   EXPECT_NEAR(mean, 0.0, 1e-12);
   // Amplitudes exactly on the power law: the fitted slope is -(1 + 2H) up to rounding.
   const std::vector<double> power = periodogram(p.heights);
-  const Fit fit = log_log_slope(power, 1, 511);
+  const SpectralSlopeFit fit = fit_spectral_slope(power, 1, 511);
   std::printf("H = %.2f: periodogram slope %.12f (exact %.12f)\n", def.hurst, fit.slope,
               -(1.0 + 2.0 * def.hurst));
   EXPECT_NEAR(fit.slope, -(1.0 + 2.0 * def.hurst), 1e-9);
@@ -97,7 +58,7 @@ TEST(RoughSurface, GaussianProfileSlopeWithinFourStandardErrors) {
   const RoughProfile p = make_rough_profile(def, 5);
   EXPECT_NEAR(rms_of(p.heights), 0.5, 1e-12);
   const std::vector<double> power = periodogram(p.heights);
-  const Fit fit = log_log_slope(power, 1, 2047);
+  const SpectralSlopeFit fit = fit_spectral_slope(power, 1, 2047);
   // ln P_k = ln(c k^-(1+2H)) + ln(chi^2_2 / 2): exponential scatter, variance pi^2/6 per
   // mode, hence the standard error of the fitted slope (about 0.03 for 2047 modes).
   std::printf("gaussian H = 0.7: slope %.4f, exact %.4f, standard error %.4f\n", fit.slope, -2.4,

@@ -29,18 +29,6 @@ Moments moments_of(const std::vector<double>& x) {
   return m;
 }
 
-// Kolmogorov-Smirnov statistic D = sup |F_n - F| of the sample against the law's CDF.
-double ks_statistic(std::vector<double> x, const SizeRangeDef& law) {
-  std::sort(x.begin(), x.end());
-  const double n = static_cast<double>(x.size());
-  double d = 0.0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const double f = size_cdf(law, x[i]);
-    d = std::max({d, (static_cast<double>(i) + 1.0) / n - f, f - static_cast<double>(i) / n});
-  }
-  return d;
-}
-
 class SizeLawTest : public ::testing::TestWithParam<SizeLaw> {};
 
 TEST_P(SizeLawTest, SampleMatchesLaw) {
@@ -82,6 +70,17 @@ TEST(SizeLaw, KsTestRejectsAWrongLaw) {
   const std::vector<double> d = sample_sizes(wide, 5000, 7);
   const SizeRangeDef uniform{0.1, 1.0, SizeLaw::uniform};
   EXPECT_GT(ks_statistic(d, uniform), 1.628 / std::sqrt(5000.0));
+}
+
+TEST(SizeLaw, KsStatisticOfKnownSamples) {
+  // Uniform on [0, 1]: the sample {0.5} has F_n = 0 below 0.5 and 1 above, F(0.5) = 0.5, so
+  // D = 0.5; the sample {0.1, 0.6}: D = max(1/2 - 0.1, 0.1, 1 - 0.6, 0.6 - 1/2) = 0.4.
+  const SizeRangeDef law{1e-12, 1.0, SizeLaw::uniform};
+  EXPECT_NEAR(ks_statistic({0.5}, law), 0.5, 1e-12);
+  EXPECT_NEAR(ks_statistic({0.6, 0.1}, law), 0.4, 1e-12);
+  // A monodisperse law is matched exactly by its one size.
+  EXPECT_EQ(ks_statistic({1.0, 1.0, 1.0}, {1.0, 1.0, SizeLaw::uniform}), 0.0);
+  EXPECT_NEAR(ks_critical_value_5pct(100), 0.136, 1e-15);
 }
 
 TEST(SizeLaw, AnalyticMomentsOfTheUniformLaw) {

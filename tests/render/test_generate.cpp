@@ -91,6 +91,7 @@ grains = 12
 grain_material = "soft"
 first_body_material = "hard"
 roughness_rms = 0.2
+hurst = 0.6
 gap = 2.4
 seed = 2
 )";
@@ -167,6 +168,7 @@ TEST(Generate, CompactionBoxSampleHasNoOverlapAndTheBuildersSolidFraction) {
     EXPECT_NEAR(c.drawn_mean, 1.0, 4.0 * c.requested_std / std::sqrt(double(c.count)));
     EXPECT_GT(c.area_diameter_mean, 0.8);
     EXPECT_LT(c.area_diameter_mean, 1.2);
+    EXPECT_LT(c.ks_statistic, c.ks_critical_5pct) << c.name;  // seed 3
   }
   EXPECT_EQ(r.sizes[0].count + r.sizes[1].count, 14);
 }
@@ -188,6 +190,46 @@ TEST(Generate, ShearCellSampleHasTheRequestedRoughness) {
   ASSERT_EQ(r.roughness.size(), 2u);
   for (const SurfaceRoughness& g : r.roughness)
     EXPECT_NEAR(g.measured_rms, 0.2, 1e-9) << g.body;
+  // Spectral slope: the surfaces are random-phase sums with amplitudes exactly on the power
+  // law C(q) ∝ q^-(1 + 2H), so the periodogram of the built contour lies on it and the fitted
+  // slope is -(1 + 2H) = -2.2 to rounding (the tolerance of tests/geometry/
+  // test_generation_rough.cpp). round(8 / 0.15) = 53 points: modes 1 .. 25.
+  for (const SurfaceRoughness& g : r.roughness) {
+    EXPECT_EQ(g.points, 53) << g.body;
+    EXPECT_EQ(g.slope_min_mode, 1) << g.body;
+    EXPECT_EQ(g.slope_max_mode, 25) << g.body;
+    EXPECT_EQ(g.requested_hurst, 0.6) << g.body;
+    EXPECT_NEAR(g.spectral_slope, -2.2, 1e-9) << g.body;
+    EXPECT_NEAR(g.measured_hurst, 0.6, 1e-9) << g.body;
+    EXPECT_TRUE(g.slope_note.empty()) << g.slope_note;
+  }
+  // Sizes: the draws' Kolmogorov-Smirnov distance to the requested law, below the 5% critical
+  // value 1.36 / sqrt(n) (seed 2; the statistic itself is tested in tests/geometry).
+  ASSERT_FALSE(r.sizes.empty());
+  int drawn = 0;
+  for (const ComponentSizes& c : r.sizes) {
+    drawn += c.count;
+    EXPECT_GT(c.ks_statistic, 0.0) << c.name;
+    EXPECT_DOUBLE_EQ(c.ks_critical_5pct, 1.36 / std::sqrt(double(c.count))) << c.name;
+    EXPECT_LT(c.ks_statistic, c.ks_critical_5pct) << c.name;
+  }
+  EXPECT_EQ(drawn, 12);
+  // ... and the same numbers in sample.json.
+  const nlohmann::json j = read_json(dir / "sample.json");
+  ASSERT_EQ(j["sizes"].size(), r.sizes.size());
+  for (std::size_t k = 0; k < r.sizes.size(); ++k) {
+    EXPECT_EQ(j["sizes"][k]["ks_statistic"].get<double>(), r.sizes[k].ks_statistic);
+    EXPECT_EQ(j["sizes"][k]["ks_critical_5pct"].get<double>(), r.sizes[k].ks_critical_5pct);
+    EXPECT_EQ(j["sizes"][k]["ks_pass"].get<bool>(), true);
+  }
+  ASSERT_EQ(j["roughness"].size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(j["roughness"][k]["spectral_slope"].get<double>(), r.roughness[k].spectral_slope);
+    EXPECT_DOUBLE_EQ(j["roughness"][k]["expected_slope"].get<double>(), -2.2);
+    EXPECT_EQ(j["roughness"][k]["measured_hurst"].get<double>(), r.roughness[k].measured_hurst);
+    EXPECT_EQ(j["roughness"][k]["requested_hurst"].get<double>(), 0.6);
+    EXPECT_EQ(j["roughness"][k]["slope_modes"], nlohmann::json::array({1, 25}));
+  }
   // Container: L times the distance between the mean surfaces (0 and top_mean_y at t = 0).
   EXPECT_GT(r.solid_fraction, 0.2);
   EXPECT_LT(r.solid_fraction, 0.9);
