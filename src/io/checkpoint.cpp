@@ -336,6 +336,9 @@ CheckpointFingerprint fingerprint_of(const Model& model, std::span<const double>
       w(d.mode[k]);
       w(d.velocity[k].times);
       w(d.velocity[k].values);
+      w(d.load[k].times);
+      w(d.load[k].values);
+      w(d.load_damping[k]);
     }
   }
   w(model.gravity);

@@ -28,7 +28,8 @@
 
 namespace sg {
 
-inline constexpr std::uint32_t kCheckpointFormatVersion = 5;
+// 6: node drives' servo loads (NodeDrive::load, load_damping) enter the model hash.
+inline constexpr std::uint32_t kCheckpointFormatVersion = 6;
 
 // What identifies the scenario a checkpoint belongs to. The counts make the common mistake
 // explicit in the message; the hashes catch the rest.
@@ -37,7 +38,7 @@ struct CheckpointFingerprint {
   // FNV-1a 64 of the data fixed at model build: body names, kinds and ranges, materials,
   // reference y and masses of the nodes, Gauss weights, node shape-function values, rigid
   // masses, inertias and contour offsets, drives (imposed velocities, forces, servo loads;
-  // node drives: nodes and imposed velocities),
+  // node drives: nodes, imposed velocities and servo loads),
   // gravity and the periodic cell. (Not the reference x of the nodes: a body crossing the
   // periodic seam changes it by a period.)
   std::uint64_t model_hash = 0;

@@ -90,23 +90,34 @@ struct RigidDrive {
   double load_damping[3] = {0, 0, 0};  // mode == load: c (force/velocity; torque.time/rad)
 };
 
-// Imposed velocities on field nodes of one deformable body: the back face of a deformable
-// strip (first body), driven as RigidDrive drives a rigid first body. Each component is free
-// or velocity-driven (DriveMode::velocity, piecewise linear in time); the velocity
-// *parameters* of the nodes are imposed (MLS does not interpolate: the physical velocity at
-// the back face follows through the rows). The solver measures the reaction the drive applies
-// and books its work (solver/explicit_solver.h).
+// Imposed motion of field nodes of one deformable body: the back face of a deformable strip
+// (first body), driven as RigidDrive drives a rigid first body. Each component is
+//  - free: every node integrated from the forces it receives;
+//  - velocity (piecewise linear in time): the velocity *parameters* of the nodes are imposed
+//    (MLS does not interpolate: the physical velocity at the back face follows through the
+//    rows);
+//  - load (servo, as DriveMode::load on a rigid degree of freedom): the nodes move as one in
+//    this component, a "carrier" of mass M = sum of their masses m_I (as scaled by mass
+//    scaling) and momentum P = sum m_I v_I, under the sum of the forces f_I they receive plus
+//    the imposed force F(t) and the viscous servo force -c v (implicit):
+//      (M + dt c) v_n+1/2 = P_n-1/2 + dt (sum_I f_I + F(t_n)),
+//    every node then getting v_n+1/2. The carrier is not extra state: its velocity is the
+//    nodes' common velocity (checkpointed with them). A pressure p on the back face of the
+//    upper strip is F = -p L on y.
+// The solver measures the reaction the drive applies and books its work
+// (solver/explicit_solver.h). Mode force is not supported on nodes.
 struct NodeDrive {
   BodyId body = -1;
   std::vector<int> nodes;  // global node indices, all in `body`, increasing
-  DriveMode mode[2] = {DriveMode::free, DriveMode::free};  // x, y: free or velocity
+  DriveMode mode[2] = {DriveMode::free, DriveMode::free};  // x, y: free, velocity or load
   PiecewiseLinear velocity[2];                             // mode == velocity (length/time)
+  PiecewiseLinear load[2];          // mode == load: F(t) on the carrier (force)
+  double load_damping[2] = {0, 0};  // mode == load: c (force/velocity)
   // Recomputed at every step (like RigidState::fx): the total force the drive applied to its
-  // nodes at the last force evaluation, R = sum_I (m_I (v_n+1/2 - v_n-1/2) / dt - f_I).
+  // nodes at the last force evaluation, R = sum_I (m_I (v_n+1/2 - v_n-1/2) / dt - f_I); under
+  // load, R = F(t_n) - c v_n+1/2 up to round-off (the carrier's equation).
   Vec2 reaction = Vec2::Zero();
-  bool drives_any() const {
-    return mode[0] == DriveMode::velocity || mode[1] == DriveMode::velocity;
-  }
+  bool drives_any() const { return mode[0] != DriveMode::free || mode[1] != DriveMode::free; }
 };
 
 // Rigid bodies: a few scalars each (structure of arrays, one entry per rigid body).

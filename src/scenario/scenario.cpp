@@ -224,10 +224,6 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
     c.first_bodies = t->one_of("first_bodies", {"rigid", "deformable"}, "rigid") == "rigid"
                          ? FirstBodyKind::rigid
                          : FirstBodyKind::deformable;
-    if (c.normal_load == NormalLoad::pressure && c.first_bodies == FirstBodyKind::deformable)
-      t->fail("normal_load",
-              "\"pressure\" is not supported with first_bodies = \"deformable\" "
-              "yet (use \"gap\")");
     if (c.normal_load == NormalLoad::pressure) {
       c.pressure = t->positive("pressure");
       c.servo_damping = t->non_negative("servo_damping", 0.0);

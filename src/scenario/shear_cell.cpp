@@ -84,9 +84,6 @@ ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId g
   SG_VERIFY(def.compaction_time > 0.0, "shear cell: compaction_time must be positive");
   SG_VERIFY(def.normal_load == NormalLoad::gap || def.pressure > 0.0,
             "shear cell: pressure loading needs a positive pressure, got " << def.pressure);
-  SG_VERIFY(def.first_bodies == FirstBodyKind::rigid || def.normal_load == NormalLoad::gap,
-            "shear cell: deformable first bodies support gap loading only (normal_load = "
-            "\"pressure\" needs a servo on a driven boundary, not implemented)");
   SG_VERIFY(def.servo_damping >= 0.0,
             "shear cell: servo_damping must be >= 0, got " << def.servo_damping);
   const double h = params.mesh.spacing;
@@ -151,6 +148,21 @@ ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId g
                      info.top_mean_y + top_profile.heights[j]);
   }
   const double closing_speed = (packed_height - info.gap) / def.compaction_time;
+  // Pressure loading: F = -p L on the top's y, ramped up over the compaction time (a load
+  // applied at once would drop the top onto the grains), with the servo's viscous force. The
+  // critical damping is that of the whole top (rigid, or a strip of the same mass: its area
+  // between the mean surface line and the back face is L times the thickness) on the layer.
+  auto set_servo = [&](PiecewiseLinear& load, double& damping) {
+    info.normal_force = def.pressure * period;
+    const MaterialDef& grain = model.material_defs[static_cast<std::size_t>(grain_material)];
+    info.servo_damping =
+        def.servo_damping > 0.0
+            ? def.servo_damping
+            : servo_damping_estimate(grain.young, grain.poisson, packed_height, period,
+                                     def.contact_stiffness, h, grain_size, mass);
+    load = PiecewiseLinear{{0.0, def.compaction_time}, {0.0, -info.normal_force}};
+    damping = info.servo_damping;
+  };
   if (def.first_bodies == FirstBodyKind::deformable) {
     // Strips from the mean surface to a flat back face at the thickness; the back faces are
     // driven as the rigid bodies below (their reactions are the forces in series.csv).
@@ -190,6 +202,13 @@ ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId g
       d.mode[0] = d.mode[1] = DriveMode::velocity;
       d.velocity[0] = ramp_between(0.0, (is_top ? 0.5 : -0.5) * def.velocity);
       d.velocity[1] = is_top ? ramp_between(-closing_speed, 0.0) : PiecewiseLinear::constant(0.0);
+      if (is_top && def.normal_load == NormalLoad::pressure) {
+        // The back face moves as one in y (a carrier of the back-face nodes' mass, NodeDrive)
+        // under the servo load, and slides at +V/2 in x.
+        d.mode[1] = DriveMode::load;
+        set_servo(d.load[1], d.load_damping[1]);
+        d.velocity[1] = PiecewiseLinear::constant(0.0);
+      }
       // The whole strip starts at its back face's velocity (a rigid strip would): no wave
       // sent through it by a back face set in motion alone at t = 0.
       set_rigid_velocity(model, b, Vec2(d.velocity[0](0.0), d.velocity[1](0.0)), 0.0);
@@ -213,18 +232,9 @@ ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId g
                                 : PiecewiseLinear::constant(0.0);
     d.velocity[2] = PiecewiseLinear::constant(0.0);
     if (b == top_id && def.normal_load == NormalLoad::pressure) {
-      // Servo-controlled confining pressure: F = -p L on the top's y, ramped up over the
-      // compaction time (a load applied at once would drop the top onto the grains).
-      info.normal_force = def.pressure * period;
-      const MaterialDef& grain = model.material_defs[static_cast<std::size_t>(grain_material)];
-      info.servo_damping =
-          def.servo_damping > 0.0
-              ? def.servo_damping
-              : servo_damping_estimate(grain.young, grain.poisson, packed_height, period,
-                                       def.contact_stiffness, h, grain_size, mass);
+      // Servo-controlled confining pressure.
       d.mode[1] = DriveMode::load;
-      d.load[1] = PiecewiseLinear{{0.0, def.compaction_time}, {0.0, -info.normal_force}};
-      d.load_damping[1] = info.servo_damping;
+      set_servo(d.load[1], d.load_damping[1]);
       d.velocity[1] = PiecewiseLinear::constant(0.0);
     }
   }

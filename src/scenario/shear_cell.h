@@ -10,7 +10,10 @@
 //    ramped from 0 over the compaction time, with a viscous servo force -c v_y so that it
 //    settles on the layer instead of bouncing; the gap is then an output.
 // After the compaction time the top slides at +V/2 and the bottom at -V/2 in both cases.
-// Deformable first bodies are driven through their back faces (NodeDrive), gap loading only.
+// Deformable first bodies are driven through their back faces (NodeDrive). Under pressure
+// loading the top strip's back-face nodes move as one in y, a carrier (of their mass) loaded
+// by the same F and servo force -c v_y (DriveMode::load on the NodeDrive's y), while they slide
+// as imposed in x; c is the same estimate, for the strip's mass.
 // The grains are a mixture of discs and ellipses by number fraction (paper 003: as many
 // circles of 0.3-0.5 um diameter as ellipses of 1-2 x 0.6-1.2 um), deformable or rigid.
 #include <cstdint>
@@ -45,7 +48,8 @@ struct ShearCellDef {
   double roughness_rms = 0.3;       // RMS height of both surfaces (length)
   double hurst = 0.8;               // Hurst exponent of the self-affine surfaces
   // Rigid: for the first bodies' mass; deformable: the strips' thickness, from the mean
-  // surface to the back face (length).
+  // surface to the back face (length). Either way, the top's mass in the servo estimate is
+  // density L thickness.
   double first_body_thickness = 2.0;
   FirstBodyKind first_bodies = FirstBodyKind::rigid;
   NormalLoad normal_load = NormalLoad::gap;

@@ -50,8 +50,9 @@ void ExplicitSolver::step(double dt) {
 
   // Per body: kinetic energy (time-centred), power of gravity, f_v . v_n+1/2, and a probe
   // that becomes NaN iff some updated value is not finite (0 * inf = NaN). Then per node
-  // drive: the imposed velocities at t_n+1/2 (2), the reaction (2) and R . v_n-1/2,
-  // R . v_n+1/2 (2). A drive's nodes are in one body: one thread writes its sums.
+  // drive: the imposed velocities at t_n+1/2 (2: the drive's history, or the carrier's new
+  // velocity under load), the reaction (2) and R . v_n-1/2, R . v_n+1/2 (2, velocity-driven
+  // components only). A drive's nodes are in one body: one thread writes its sums.
   const std::size_t drive_count = model_.node_drives.size();
   body_sums_.assign(4 * model_.bodies.size() + 6 * drive_count, 0.0);
   double* const drive_data = body_sums_.data() + 4 * model_.bodies.size();
@@ -60,6 +61,7 @@ void ExplicitSolver::step(double dt) {
     for (int c = 0; c < 2; ++c)
       if (model_.node_drives[d].mode[c] == DriveMode::velocity)
         drive_data[6 * d + static_cast<std::size_t>(c)] = model_.node_drives[d].velocity[c](t_mid);
+  const ServoPower carrier_power = advance_node_carriers(dt, drive_data);
 #pragma omp parallel for schedule(static)
   for (int b = 0; b < body_count; ++b) {
     const Body& body = model_.bodies[static_cast<std::size_t>(b)];
@@ -81,7 +83,7 @@ void ExplicitSolver::step(double dt) {
           double* velocity[2] = {&n.vx[i], &n.vy[i]};
           double* force[2] = {&n.fx[i], &n.fy[i]};
           for (std::size_t c = 0; c < 2; ++c) {
-            if (nd.mode[c] != DriveMode::velocity) {
+            if (nd.mode[c] == DriveMode::free) {
               *velocity[c] += dt * n.inverse_mass[i] * *force[c];
               continue;
             }
@@ -90,8 +92,10 @@ void ExplicitSolver::step(double dt) {
             *force[c] += reaction;  // fx, fy: the total force on the parameter
             *velocity[c] = v_new;
             sums[2 + c] += reaction;
-            sums[4] += reaction * v_old;
-            sums[5] += reaction * v_new;
+            if (nd.mode[c] == DriveMode::velocity) {  // a carrier's work: as a servo load's
+              sums[4] += reaction * v_old;
+              sums[5] += reaction * v_new;
+            }
           }
         }
         n.ux[i] += dt * n.vx[i];
@@ -120,7 +124,7 @@ void ExplicitSolver::step(double dt) {
     finite_probe += body_sums_[4 * b + 3];
   }
 
-  const auto [rigid_kinetic, rigid_power] = advance_rigid_bodies(dt);
+  const auto [rigid_kinetic, rigid_power] = advance_rigid_bodies(dt, carrier_power);
   kinetic += rigid_kinetic;
   external_power += rigid_power;
 
@@ -163,11 +167,53 @@ void ExplicitSolver::step(double dt) {
   if (finite_probe != 0.0 || !std::isfinite(finite_probe)) check_finite_velocities();
 }
 
-std::pair<double, double> ExplicitSolver::advance_rigid_bodies(double dt) {
+ExplicitSolver::ServoPower ExplicitSolver::advance_node_carriers(double dt,
+                                                                 double* drive_data) const {
+  ServoPower power;
+  const NodeState& n = model_.nodes;
+  for (std::size_t d = 0; d < model_.node_drives.size(); ++d) {
+    const NodeDrive& nd = model_.node_drives[d];
+    for (std::size_t c = 0; c < 2; ++c) {
+      SG_VERIFY(nd.mode[c] != DriveMode::force,
+                "body '" << model_.bodies[static_cast<std::size_t>(nd.body)].name
+                         << "': a node drive cannot impose a constant force (use load)");
+      if (nd.mode[c] != DriveMode::load) continue;
+      SG_VERIFY(!nd.nodes.empty(), "body '" << model_.bodies[static_cast<std::size_t>(nd.body)].name
+                                            << "': a load-driven node drive has no nodes");
+      // The carrier: mass, momentum and received force of its nodes, summed in node order
+      // (serial: the same bits on any number of threads).
+      const std::vector<double>& v = c == 0 ? n.vx : n.vy;
+      const std::vector<double>& f = c == 0 ? n.fx : n.fy;
+      double mass = 0.0, momentum = 0.0, received = 0.0;
+      for (int k : nd.nodes) {
+        const auto i = static_cast<std::size_t>(k);
+        mass += n.mass[i];
+        momentum += n.mass[i] * v[i];
+        received += f[i];
+      }
+      // M (v_n+1/2 - v_n-1/2) = dt (received + F(t_n) - c v_n+1/2), as a servo-loaded rigid
+      // degree of freedom (advance_rigid_bodies), with M v_n-1/2 the carrier's momentum.
+      const double load = nd.load[c](state_.time);
+      const double damping = nd.load_damping[c];
+      const double v_old = momentum / mass;
+      const double v_new = (momentum + dt * (received + load)) / (mass + dt * damping);
+      drive_data[6 * d + c] = v_new;
+      power.load_old += load * v_old;
+      power.load_new += load * v_new;
+      power.servo_old += damping * v_new * v_old;
+      power.servo_new += damping * v_new * v_new;
+    }
+  }
+  return power;
+}
+
+std::pair<double, double> ExplicitSolver::advance_rigid_bodies(double dt, ServoPower servo) {
   RigidState& r = model_.rigid;
   double kinetic = 0.0, power = 0.0;
-  // Servo-loaded DOFs: sums of F_n . v and (c v_n+1/2) . v over v_n-1/2 and v_n+1/2.
-  double load_work_old = 0.0, load_work_new = 0.0, servo_old = 0.0, servo_new = 0.0;
+  // Servo-loaded DOFs: sums of F_n . v and (c v_n+1/2) . v over v_n-1/2 and v_n+1/2, the node
+  // carriers' first.
+  double load_work_old = servo.load_old, load_work_new = servo.load_new,
+         servo_old = servo.servo_old, servo_new = servo.servo_new;
   const double t_mid = state_.time + 0.5 * dt;  // velocities live at half steps
   for (std::size_t i = 0; i < r.size(); ++i) {
     const RigidDrive& drive = r.drive[i];

@@ -17,6 +17,13 @@
 // stay part of the system (their kinetic energy is counted) and the work of R is external
 // work, booked like the servo loads: 1/2 dt R_n . (v_n-1/2 + v_n+1/2), which is what the
 // time-centred kinetic energy sees, so the ledger stays closed.
+//
+// Servo-loaded node drives (DriveMode::load, the back face of a pressure-loaded strip): the
+// driven nodes move as one carrier (model/model.h NodeDrive); its velocity v_n+1/2 is computed
+// first, from the sum of the forces its nodes receive, then imposed on them as above. Its
+// reaction is F - c v_n+1/2, so instead of R . v the ledger books the work of the load F as
+// external work and that of -c v as servo dissipation, split over two steps as for a
+// servo-loaded rigid degree of freedom; the two agree because the nodes share one velocity.
 #include <string>
 #include <vector>
 
@@ -75,7 +82,8 @@ class ExplicitSolver {
   // ledger always describes one instant.
   double pending_external_work_ = 0.0;
   double pending_damping_dissipation_ = 0.0;
-  // The same for servo-loaded rigid degrees of freedom (their imposed force and viscous force).
+  // The same for servo-loaded degrees of freedom, rigid or node carriers (their imposed force
+  // and viscous force).
   double pending_load_work_ = 0.0;
   double pending_servo_dissipation_ = 0.0;
   // The same for the reactions of driven field nodes (NodeDrive: the back faces of deformable
@@ -85,10 +93,20 @@ class ExplicitSolver {
   // and partial sums (see step()).
   std::vector<double> body_sums_;
   void check_finite_velocities() const;
+  // Power of the servo loads (DriveMode::load) at the force evaluation: F_n . v and
+  // (c v_n+1/2) . v with v = v_n-1/2 (old) and v = v_n+1/2 (new), summed over rigid degrees
+  // of freedom and node-drive carriers.
+  struct ServoPower {
+    double load_old = 0.0, load_new = 0.0, servo_old = 0.0, servo_new = 0.0;
+  };
+  // The velocities v_n+1/2 of the node drives' carriers (mode load), written to the drive's
+  // imposed-velocity slots of `drive_data` (6 per drive, see step()); their servo power.
+  ServoPower advance_node_carriers(double dt, double* drive_data) const;
   // Advances rigid bodies; returns (kinetic energy time-centred, external power of gravity
   // and constant forces). Books the load work and servo dissipation of DriveMode::load
-  // degrees of freedom in the ledger itself (they are split over two steps).
-  std::pair<double, double> advance_rigid_bodies(double dt);
+  // degrees of freedom in the ledger itself (they are split over two steps), those of the
+  // rigid bodies added to `servo` (the node carriers' part).
+  std::pair<double, double> advance_rigid_bodies(double dt, ServoPower servo);
   void wrap_periodic_bodies();
 };
 

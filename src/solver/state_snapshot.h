@@ -6,7 +6,8 @@
 //   field nodes   u, v, and ref_x (ExplicitSolver::wrap_periodic_bodies moves a deformable
 //                 body across the periodic seam by shifting its reference positions)
 //   rigid bodies  pose, velocities, and the forces received at the last evaluation
-//   node drives   the reactions at the last evaluation
+//   node drives   the reactions at the last evaluation (a servo-loaded drive's carrier has
+//                 no state of its own: its velocity is its nodes' common one, saved above)
 //   solver        time, step count, energy ledger, and the work and dissipation of the last
 //                 step that the next step books (ExplicitSolver's pending increments)
 //   contacts      per-contact histories, the previous contour positions (slip increments),

@@ -1,7 +1,8 @@
 // A short shear cell with deformable first bodies ([shear_cell] first_bodies = "deformable",
 // paper 000 §3) through `softgrain run`'s engine: the energy ledger closes with the drives'
 // work, the driven back faces follow their imposed motion, series.csv is byte-identical on 1
-// and 2 threads and after a stop and resume; pressure loading is refused with one line.
+// and 2 threads and after a stop and resume (pressure loading:
+// test_shear_cell_deformable_pressure.cpp).
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -121,20 +122,6 @@ TEST(DeformableFirstBodies, ShortShearCellBalancesEnergyAndIsThreadIndependent) 
   EXPECT_TRUE(one.text == again.text) << "series.csv differs after a stop and resume";
   for (const fs::path& d : {one_dir, two_dir, resumed_dir})
     fs::remove_all(d);
-}
-
-TEST(DeformableFirstBodies, PressureLoadingIsRefusedNamingFileAndKey) {
-  std::string text = cell_scenario("cell");
-  const auto gap = text.find("\ngap = ");
-  ASSERT_NE(gap, std::string::npos);
-  text.erase(gap + 1, text.find('\n', gap + 1) - gap);  // the gap is an output under pressure
-  text = scenes::replace_once(text, "[shear_cell]\n",
-                              "[shear_cell]\nnormal_load = \"pressure\"\npressure = 1.0\n");
-  const std::string error = scenes::scenario_error(scenes::process_temp_dir("strips_bad"), text);
-  EXPECT_NE(error.find("bad.toml"), std::string::npos) << error;
-  EXPECT_NE(error.find("normal_load"), std::string::npos) << error;
-  EXPECT_NE(error.find("deformable"), std::string::npos) << error;
-  EXPECT_EQ(error.find('\n'), std::string::npos) << error;
 }
 
 }  // namespace
