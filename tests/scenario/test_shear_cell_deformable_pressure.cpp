@@ -183,6 +183,7 @@ TEST(DeformablePressure, TopStripCarriesThePressureAndTheLedgerCloses) {
   EXPECT_GT(e.servo_dissipated, 0.0);
   EXPECT_GT(e.external_work, 1.0);
   EXPECT_LT(std::abs(e.residual()), 0.01 * e.external_work);
+  fs::remove_all(dir);
 }
 
 RunSummary run(const fs::path& dir, int threads, long stop_after = -1, bool resume = false) {
