@@ -85,6 +85,15 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model) {
   // their capacity has grown.
   std::vector<ContactGroup>& groups = groups_;
   groups.clear();
+  // Each group's previous history (index into histories_, -1: none). The groups come in
+  // increasing (slave point, master body) order (a body's segments are contiguous and
+  // numbered in body order), and so do the histories (written by the scatter below in group
+  // order): one merge walk finds them all, O(1) per group. A binary search per group cost
+  // O(log n) (bench_contacts: ~60 more instructions per boundary node on 10,000 grains than
+  // on 100).
+  std::vector<int>& group_history = group_history_;
+  group_history.clear();
+  std::size_t cursor = 0;
   for (std::size_t i = 0; i < candidates.size();) {
     std::size_t j = i + 1;
     const int body = segment_body_[static_cast<std::size_t>(candidates[i].segment)];
@@ -92,27 +101,32 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model) {
            segment_body_[static_cast<std::size_t>(candidates[j].segment)] == body)
       ++j;
     groups.push_back({i, j});
+    const int slave = candidates[i].node;
+    while (cursor < histories_.size() &&
+           std::make_pair(histories_[cursor].slave_point, histories_[cursor].master_body) <
+               std::make_pair(slave, body))
+      ++cursor;
+    const bool found = cursor < histories_.size() && histories_[cursor].slave_point == slave &&
+                       histories_[cursor].master_body == body;
+    group_history.push_back(found ? static_cast<int>(cursor) : -1);
     i = j;
   }
-
-  // Previous histories, sorted by (slave, master): looked up by binary search.
-  auto history_of = [&](int slave, BodyId master) -> ContactHistory {
-    const auto it =
-        std::lower_bound(histories_.begin(), histories_.end(), std::make_pair(slave, master),
-                         [](const ContactHistoryEntry& e, const std::pair<int, BodyId>& key) {
-                           return std::make_pair(e.slave_point, e.master_body) < key;
-                         });
-    if (it != histories_.end() && it->slave_point == slave && it->master_body == master)
-      return it->history;
-    return ContactHistory{};
-  };
+  SG_VALIDATE(std::is_sorted(histories_.begin(), histories_.end(),
+                             [](const ContactHistoryEntry& a, const ContactHistoryEntry& b) {
+                               return std::make_pair(a.slave_point, a.master_body) <
+                                      std::make_pair(b.slave_point, b.master_body);
+                             }),
+              "contact histories are not sorted by (slave point, master body)");
 
   std::vector<ContactRecord>& results = results_;
   std::vector<ContactHistory>& new_history = new_history_;
   std::vector<double>& stored = stored_;
-  results.assign(groups.size(), ContactRecord{});
-  new_history.assign(groups.size(), ContactHistory{});
-  stored.assign(groups.size(), 0.0);
+  // Not cleared: the loop below writes every group's result (r.active at least) and history,
+  // and its stored energy whenever the scatter reads it (r.active). Clearing them rewrote
+  // 160 bytes per group each step (46 MB on 10,000 grains, far beyond the cache).
+  results.resize(groups.size());
+  new_history.resize(groups.size());
+  stored.resize(groups.size());
   const int group_count = static_cast<int>(groups.size());
   const double period = model.x_max - model.x_min;
 #pragma omp parallel for schedule(static)
@@ -149,7 +163,9 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model) {
     }
     const Vec2 node = unshifted + Vec2(shift, 0.0);
     ContactRecord& r = results[static_cast<std::size_t>(g)];
-    ContactHistory h = history_of(slave, master);
+    const int previous = group_history[static_cast<std::size_t>(g)];
+    ContactHistory h =
+        previous >= 0 ? histories_[static_cast<std::size_t>(previous)].history : ContactHistory{};
     if (proj.segment < 0 || (proj.gap >= settings_.cutoff && !h.active)) {
       r.active = false;
       new_history[static_cast<std::size_t>(g)] = ContactHistory{};
@@ -263,7 +279,8 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model) {
       next.push_back({r.slave_point, r.master_body, new_history[g]});
   }
   histories_.swap(next);
-  previous_positions_ = positions_;
+  // A swap, not a copy: positions_ is recomputed in full at the next evaluation.
+  previous_positions_.swap(positions_);
   return result;
 }
 

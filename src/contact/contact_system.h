@@ -129,6 +129,7 @@ class ContactSystem {
   std::vector<double> stored_;
   std::vector<ContactHistoryEntry> next_histories_;
   void update_geometry(const Model& model);
+  std::vector<int> group_history_;  // per group: its entry in histories_, -1: none (scratch)
 };
 
 }  // namespace sg
