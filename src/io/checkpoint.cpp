@@ -258,8 +258,11 @@ void describe(A& a, S& s) requires std::is_same_v<std::remove_const_t<S>, StateS
   a(s.rigid_fy);
   a(s.rigid_torque);
   a(s.drive_reaction);
+  static_assert(sizeof(SolverState) == 2 * sizeof(double) + sizeof(long) + sizeof(EnergyLedger),
+                "SolverState changed: update the checkpoint");
   a(s.solver.time);
   a(s.solver.step);
+  a(s.solver.previous_dt);
   if constexpr (std::is_const_v<S>)
     save_ledger(a, s.solver.energy);
   else

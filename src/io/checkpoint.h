@@ -29,7 +29,9 @@
 namespace sg {
 
 // 6: node drives' servo loads (NodeDrive::load, load_damping) enter the model hash.
-inline constexpr std::uint32_t kCheckpointFormatVersion = 6;
+// 7: the solver's previous step (SolverState::previous_dt) and the ledger's step_change
+//    (variable-step central difference, solver/explicit_solver.h).
+inline constexpr std::uint32_t kCheckpointFormatVersion = 7;
 
 // What identifies the scenario a checkpoint belongs to. The counts make the common mistake
 // explicit in the message; the hashes catch the rest.

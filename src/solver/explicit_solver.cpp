@@ -9,12 +9,18 @@
 namespace sg {
 
 double EnergyLedger::residual() const {
-  return external_work - (kinetic - initial_kinetic) -
+  return external_work + step_change - (kinetic - initial_kinetic) -
          (elastic + contact_elastic - initial_elastic) - damping_dissipated - contact_dissipated -
          servo_dissipated;
 }
 
 void ExplicitSolver::step(double dt) {
+  // The interval [t_n-1, t_n] that ends here was dt_prev long (at the first step there is none:
+  // the initial velocities are v_-1/2, as for a constant step dt); velocities advance over
+  // h = t_n+1/2 - t_n-1/2 = (dt_prev + dt) / 2, which is dt bitwise when the step does not
+  // change (0.5 * (dt + dt) is exact).
+  const double dt_prev = state_.previous_dt > 0.0 ? state_.previous_dt : dt;
+  const double h = 0.5 * (dt_prev + dt);
   NodeState& n = model_.nodes;
   const double gx = model_.gravity.x(), gy = model_.gravity.y();
 
@@ -48,25 +54,29 @@ void ExplicitSolver::step(double dt) {
     SG_THROW(e.what() << " at step " << state_.step << ", time " << state_.time);
   }
 
-  // Per body: kinetic energy (time-centred), power of gravity, f_v . v_n+1/2, and a probe
-  // that becomes NaN iff some updated value is not finite (0 * inf = NaN). Then per node
+  // Per body: kinetic energy (time-centred), power of gravity, f_v . v_n+1/2, a probe
+  // that becomes NaN iff some updated value is not finite (0 * inf = NaN), and of the total
+  // force F_n on each parameter F_n . v_n+1/2 and F_n . F_n / m (the kinetic energies K_n^+
+  // and K_n^- of the header, as corrections of the time-centred one). Then per node
   // drive: the imposed velocities at t_n+1/2 (2: the drive's history, or the carrier's new
   // velocity under load), the reaction (2) and R . v_n-1/2, R . v_n+1/2 (2, velocity-driven
   // components only). A drive's nodes are in one body: one thread writes its sums.
   const std::size_t drive_count = model_.node_drives.size();
-  body_sums_.assign(4 * model_.bodies.size() + 6 * drive_count, 0.0);
-  double* const drive_data = body_sums_.data() + 4 * model_.bodies.size();
+  constexpr std::size_t kBodySums = 6;
+  body_sums_.assign(kBodySums * model_.bodies.size() + 6 * drive_count, 0.0);
+  double* const drive_data = body_sums_.data() + kBodySums * model_.bodies.size();
   const double t_mid = state_.time + 0.5 * dt;  // velocities live at half steps
   for (std::size_t d = 0; d < drive_count; ++d)
     for (int c = 0; c < 2; ++c)
       if (model_.node_drives[d].mode[c] == DriveMode::velocity)
         drive_data[6 * d + static_cast<std::size_t>(c)] = model_.node_drives[d].velocity[c](t_mid);
-  const ServoPower carrier_power = advance_node_carriers(dt, drive_data);
+  const ServoPower carrier_power = advance_node_carriers(h, drive_data);
 #pragma omp parallel for schedule(static)
   for (int b = 0; b < body_count; ++b) {
     const Body& body = model_.bodies[static_cast<std::size_t>(b)];
     const double bgx = gx / body.mass_scale, bgy = gy / body.mass_scale;
-    double kinetic = 0.0, external_power = 0.0, viscous_work = 0.0, finite_probe = 0.0;
+    double kinetic = 0.0, external_power = 0.0, viscous_work = 0.0, finite_probe = 0.0,
+           force_power = 0.0, force_square = 0.0;
     // Two instances of the node loop: grains (no driven nodes, the hot case) never look at
     // NodeState::drive; a strip with a driven back face checks each node.
     auto advance_nodes = [&](auto has_driven_nodes) {
@@ -75,8 +85,8 @@ void ExplicitSolver::step(double dt) {
         const double vx_old = n.vx[i], vy_old = n.vy[i];
         const int drive = decltype(has_driven_nodes)::value ? n.drive[i] : -1;
         if (drive < 0) {
-          n.vx[i] += dt * n.inverse_mass[i] * n.fx[i];
-          n.vy[i] += dt * n.inverse_mass[i] * n.fy[i];
+          n.vx[i] += h * n.inverse_mass[i] * n.fx[i];
+          n.vy[i] += h * n.inverse_mass[i] * n.fy[i];
         } else {
           const NodeDrive& nd = model_.node_drives[static_cast<std::size_t>(drive)];
           double* sums = drive_data + 6 * static_cast<std::size_t>(drive);
@@ -84,11 +94,11 @@ void ExplicitSolver::step(double dt) {
           double* force[2] = {&n.fx[i], &n.fy[i]};
           for (std::size_t c = 0; c < 2; ++c) {
             if (nd.mode[c] == DriveMode::free) {
-              *velocity[c] += dt * n.inverse_mass[i] * *force[c];
+              *velocity[c] += h * n.inverse_mass[i] * *force[c];
               continue;
             }
             const double v_old = *velocity[c], v_new = sums[c];
-            const double reaction = n.mass[i] * (v_new - v_old) / dt - *force[c];
+            const double reaction = n.mass[i] * (v_new - v_old) / h - *force[c];
             *force[c] += reaction;  // fx, fy: the total force on the parameter
             *velocity[c] = v_new;
             sums[2 + c] += reaction;
@@ -101,6 +111,8 @@ void ExplicitSolver::step(double dt) {
         n.ux[i] += dt * n.vx[i];
         n.uy[i] += dt * n.vy[i];
         kinetic += 0.5 * n.mass[i] * (vx_old * n.vx[i] + vy_old * n.vy[i]);
+        force_power += n.fx[i] * n.vx[i] + n.fy[i] * n.vy[i];
+        force_square += n.inverse_mass[i] * (n.fx[i] * n.fx[i] + n.fy[i] * n.fy[i]);
         viscous_work += n.viscous_fx[i] * n.vx[i] + n.viscous_fy[i] * n.vy[i];
         external_power += n.mass[i] * (bgx * n.vx[i] + bgy * n.vy[i]);
         finite_probe += 0.0 * (n.ux[i] + n.uy[i] + n.vx[i] + n.vy[i]);
@@ -110,37 +122,52 @@ void ExplicitSolver::step(double dt) {
       advance_nodes(std::false_type{});
     else
       advance_nodes(std::true_type{});
-    double* sums = body_sums_.data() + 4 * static_cast<std::size_t>(b);
+    double* sums = body_sums_.data() + kBodySums * static_cast<std::size_t>(b);
     sums[0] = kinetic;
     sums[1] = external_power;
     sums[2] = viscous_work;
     sums[3] = finite_probe;
+    sums[4] = force_power;
+    sums[5] = force_square;
   }
-  double kinetic = 0.0, external_power = 0.0, viscous_work_new = 0.0, finite_probe = 0.0;
+  double kinetic = 0.0, external_power = 0.0, viscous_work_new = 0.0, finite_probe = 0.0,
+         force_power = 0.0, force_square = 0.0;
   for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
-    kinetic += body_sums_[4 * b];
-    external_power += body_sums_[4 * b + 1];
-    viscous_work_new += body_sums_[4 * b + 2];
-    finite_probe += body_sums_[4 * b + 3];
+    const double* sums = body_sums_.data() + kBodySums * b;
+    kinetic += sums[0];
+    external_power += sums[1];
+    viscous_work_new += sums[2];
+    finite_probe += sums[3];
+    force_power += sums[4];
+    force_square += sums[5];
   }
 
-  const auto [rigid_kinetic, rigid_power] = advance_rigid_bodies(dt, carrier_power);
-  kinetic += rigid_kinetic;
-  external_power += rigid_power;
+  const RigidUpdate rigid_update = advance_rigid_bodies(dt, dt_prev, carrier_power);
+  kinetic += rigid_update.kinetic;
+  external_power += rigid_update.external_power;
+  force_power += rigid_update.force_power;
+  force_square += rigid_update.force_square;
 
   // Bulk damping, booked so that the ledger closes exactly for a linear system under this
-  // scheme: the modified energy 1/2 v_n-1/2 M v_n+1/2 + E(u_n) changes over a step by
-  // 1/2 dt v_n+1/2 . (f_v,n + f_v,n+1). The half pairing f_v,n with v_n-1/2 (the power at
-  // the force evaluation) completes the previous increment; the half pairing it with
-  // v_n+1/2 starts the next one.
+  // scheme: over [t_n, t_n+1] the energy K^+_n + E(u_n) becomes K^-_n+1 + E(u_n+1), changed
+  // by the trapezoidal work 1/2 dt v_n+1/2 . (f_v,n + f_v,n+1) (header). The half pairing
+  // f_v,n with v_n-1/2 (the power at the force evaluation) completes the interval that ends
+  // here, with its step dt_prev; the half pairing it with v_n+1/2 opens the next one (dt).
   EnergyLedger& e = state_.energy;
   e.external_work += pending_external_work_;
   e.damping_dissipated += pending_damping_dissipation_;
-  if (state_.step > 0) e.damping_dissipated += 0.5 * dt * internal.damping_power;
+  if (state_.step > 0) e.damping_dissipated += 0.5 * dt_prev * internal.damping_power;
   // Contact dissipation of this evaluation belongs to the increment that led to u_n.
   e.contact_dissipated += contact.dissipated;
   e.contact_elastic = contact.stored_energy;
+  // The kinetic energy that opens [t_n, t_n+1], K_n^+ = tc + 1/4 (dt_prev - dt) F . v_n+1/2
+  // with tc the time-centred sum, and the step change K_n^+ - K_n^- =
+  // -1/8 (dt^2 - dt_prev^2) F . F / m (header): both exactly 0 for a constant step.
   e.kinetic = kinetic;
+  if (dt != dt_prev) {  // (not 0 * F . F: the ledger of a constant step is the same bits)
+    e.kinetic += 0.25 * (dt_prev - dt) * force_power;
+    e.step_change += -0.125 * ((dt - dt_prev) * (dt + dt_prev)) * force_square;
+  }
   e.elastic = internal.elastic_energy;
   if (state_.step == 0) {
     e.initial_kinetic = kinetic;
@@ -158,16 +185,17 @@ void ExplicitSolver::step(double dt) {
     drive_work_new += sums[5];
   }
   e.external_work += pending_drive_work_;
-  if (state_.step > 0) e.external_work += 0.5 * dt * drive_work_old;
+  if (state_.step > 0) e.external_work += 0.5 * dt_prev * drive_work_old;
   pending_drive_work_ = 0.5 * dt * drive_work_new;
 
+  state_.previous_dt = dt;
   state_.time += dt;
   ++state_.step;
   if (model_.periodic_x) wrap_periodic_bodies();
   if (finite_probe != 0.0 || !std::isfinite(finite_probe)) check_finite_velocities();
 }
 
-ExplicitSolver::ServoPower ExplicitSolver::advance_node_carriers(double dt,
+ExplicitSolver::ServoPower ExplicitSolver::advance_node_carriers(double h,
                                                                  double* drive_data) const {
   ServoPower power;
   const NodeState& n = model_.nodes;
@@ -191,12 +219,12 @@ ExplicitSolver::ServoPower ExplicitSolver::advance_node_carriers(double dt,
         momentum += n.mass[i] * v[i];
         received += f[i];
       }
-      // M (v_n+1/2 - v_n-1/2) = dt (received + F(t_n) - c v_n+1/2), as a servo-loaded rigid
+      // M (v_n+1/2 - v_n-1/2) = h (received + F(t_n) - c v_n+1/2), as a servo-loaded rigid
       // degree of freedom (advance_rigid_bodies), with M v_n-1/2 the carrier's momentum.
       const double load = nd.load[c](state_.time);
       const double damping = nd.load_damping[c];
       const double v_old = momentum / mass;
-      const double v_new = (momentum + dt * (received + load)) / (mass + dt * damping);
+      const double v_new = (momentum + h * (received + load)) / (mass + h * damping);
       drive_data[6 * d + c] = v_new;
       power.load_old += load * v_old;
       power.load_new += load * v_new;
@@ -207,9 +235,11 @@ ExplicitSolver::ServoPower ExplicitSolver::advance_node_carriers(double dt,
   return power;
 }
 
-std::pair<double, double> ExplicitSolver::advance_rigid_bodies(double dt, ServoPower servo) {
+ExplicitSolver::RigidUpdate ExplicitSolver::advance_rigid_bodies(double dt, double dt_prev,
+                                                                 ServoPower servo) {
   RigidState& r = model_.rigid;
-  double kinetic = 0.0, power = 0.0;
+  RigidUpdate update;
+  const double h = 0.5 * (dt_prev + dt);  // as in step()
   // Servo-loaded DOFs: sums of F_n . v and (c v_n+1/2) . v over v_n-1/2 and v_n+1/2, the node
   // carriers' first.
   double load_work_old = servo.load_old, load_work_new = servo.load_new,
@@ -231,48 +261,52 @@ std::pair<double, double> ExplicitSolver::advance_rigid_bodies(double dt, ServoP
         // forces it exerts through the contacts, -received . v.
         *velocity[d] = drive.velocity[d](t_mid);
         *position[d] += dt * *velocity[d];
-        power -= received[d] * *velocity[d];
+        update.external_power -= received[d] * *velocity[d];
         continue;
       }
+      double force = 0.0;  // the total force F_n of the update v_n+1/2 = v_n-1/2 + h F_n / m
       if (drive.mode[d] == DriveMode::load) {
         // Servo: the imposed force F(t_n) and the viscous force -c v, the latter implicit in
         // the new velocity so that no value of c limits the step:
-        //   m (v_n+1/2 - v_n-1/2) = dt (received + gravity + F - c v_n+1/2).
+        //   m (v_n+1/2 - v_n-1/2) = h (received + gravity + F - c v_n+1/2).
         const double load = drive.load[d](state_.time);
         const double c = drive.load_damping[d];
         *velocity[d] =
-            (inertia[d] * v_old + dt * (received[d] + gravity[d] + load)) / (inertia[d] + dt * c);
-        *position[d] += dt * *velocity[d];
-        kinetic += 0.5 * inertia[d] * v_old * *velocity[d];
-        power += gravity[d] * *velocity[d];
+            (inertia[d] * v_old + h * (received[d] + gravity[d] + load)) / (inertia[d] + h * c);
+        force = received[d] + gravity[d] + load - c * *velocity[d];
+        update.external_power += gravity[d] * *velocity[d];
         load_work_old += load * v_old;
         load_work_new += load * *velocity[d];
         servo_old += c * *velocity[d] * v_old;
         servo_new += c * *velocity[d] * *velocity[d];
-        continue;
+      } else {
+        const double external =
+            gravity[d] + (drive.mode[d] == DriveMode::force ? drive.force[d] : 0.0);
+        force = received[d] + external;
+        *velocity[d] = v_old + h * force / inertia[d];
+        update.external_power += external * *velocity[d];
       }
-      const double external =
-          gravity[d] + (drive.mode[d] == DriveMode::force ? drive.force[d] : 0.0);
-      *velocity[d] = v_old + dt * (received[d] + external) / inertia[d];
       *position[d] += dt * *velocity[d];
-      kinetic += 0.5 * inertia[d] * v_old * *velocity[d];
-      power += external * *velocity[d];
+      update.kinetic += 0.5 * inertia[d] * v_old * *velocity[d];
+      update.force_power += force * *velocity[d];
+      update.force_square += force * force / inertia[d];
     }
   }
-  // A force f_n that depends on time or on v_n+1/2 is booked as 1/2 dt f_n . (v_n-1/2 +
-  // v_n+1/2), the same split as the bulk damping in step(): the time-centred kinetic energy
-  // changes over [t_n-1, t_n] by 1/2 dt v_n-1/2 . (f_n-1 + f_n), so the half with v_n-1/2
-  // closes the increment that ends now and the half with v_n+1/2 opens the next one.
+  // A force f_n that depends on time or on v_n+1/2 is booked as
+  // 1/2 dt_prev f_n . v_n-1/2 + 1/2 dt f_n . v_n+1/2, the same split as the bulk damping in
+  // step(): the kinetic energy changes over [t_n-1, t_n] by the trapezoidal work
+  // 1/2 dt_prev v_n-1/2 . (F_n-1 + F_n) (K_n^- - K_n-1^+, header), so the half with v_n-1/2
+  // closes the interval that ends now, with its step, and the half with v_n+1/2 opens the next.
   EnergyLedger& e = state_.energy;
   e.external_work += pending_load_work_;
   e.servo_dissipated += pending_servo_dissipation_;
   if (state_.step > 0) {
-    e.external_work += 0.5 * dt * load_work_old;
-    e.servo_dissipated += 0.5 * dt * servo_old;
+    e.external_work += 0.5 * dt_prev * load_work_old;
+    e.servo_dissipated += 0.5 * dt_prev * servo_old;
   }
   pending_load_work_ = 0.5 * dt * load_work_new;
   pending_servo_dissipation_ = 0.5 * dt * servo_new;
-  return {kinetic, power};
+  return update;
 }
 
 void ExplicitSolver::wrap_periodic_bodies() {

@@ -1,22 +1,46 @@
 #pragma once
-// Explicit symplectic Euler time stepping of a Model (DESIGN.md §2 "Time integration"):
+// Explicit central-difference (leapfrog) time stepping of a Model with a step that may change
+// from one step to the next (DESIGN.md §2 "Time integration"; Belytschko, Liu & Moran,
+// "Nonlinear Finite Elements for Continua and Structures", §6.2, box 6.1). With dt_- = t_n -
+// t_n-1 the step that ended at t_n and dt_+ = t_n+1 - t_n the step about to be taken:
 //
-//   forces:     f_n = f_ext + f_int(u_n, v_{n-1/2})
-//   velocities: v_{n+1/2} = v_{n-1/2} + dt M^-1 f_n
-//   positions:  u_{n+1}   = u_n + dt v_{n+1/2}
+//   forces:     F_n = f_ext + f_int(u_n, v_n-1/2)                  (+ drive reactions)
+//   velocities: v_n+1/2 = v_n-1/2 + h_n M^-1 F_n,   h_n = (dt_- + dt_+) / 2
+//   positions:  u_n+1   = u_n + dt_+ v_n+1/2
 //
-// Velocities live at half steps. The energy ledger is written for the configuration u_n at
-// which the forces were evaluated, with the kinetic energy taken as
-// 1/2 sum m v_{n-1/2} . v_{n+1/2}: for a linear undamped system this "time-centred" kinetic
-// energy plus the elastic energy is exactly conserved by the scheme, so the ledger measures
-// the physics and not the O(dt) staggering of the update.
+// Velocities live at the middles of the intervals, t_n+1/2 = t_n + dt_+ / 2, so h_n is the
+// time between v_n-1/2 and v_n+1/2; for a constant step h_n = dt bitwise (0.5 * (dt + dt)).
+// The full-step velocity v_n = v_n-1/2 + dt_-/2 M^-1 F_n = v_n+1/2 - dt_+/2 M^-1 F_n is then
+// the same from both sides. (With h_n = dt_+, as before issue #4's fix, it is not, and every
+// change of the step made a first-order energy error 1/2 (dt_+ - dt_-) v_n-1/2 . F_n that no
+// smaller step removed: the step controller could not recover from a rejection.) The initial
+// velocities are taken as v_-1/2 with dt_- = dt_+ at the first step: a start from rest is
+// the exact motion shifted by dt_0/2 in time (tests/solver/test_variable_step.cpp).
+//
+// The energy ledger is written for the configuration u_n at which the forces were evaluated.
+// Over an interval [t_n-1, t_n] of step dt_- the trapezoidal work of the forces along
+// u_n - u_n-1 = dt_- v_n-1/2, 1/2 dt_- v_n-1/2 . (F_n-1 + F_n), equals K_n^- - K_n-1^+
+// exactly, with the kinetic energies
+//   K_n^- = 1/2 v_n-1/2 M v_n-1/2 + 1/2 dt_- v_n-1/2 . F_n   (closes the interval ending at n)
+//   K_n^+ = 1/2 v_n+1/2 M v_n+1/2 - 1/2 dt_+ v_n+1/2 . F_n   (opens the one starting at n);
+// for a constant step both are the time-centred 1/2 v_n-1/2 M v_n+1/2. For a linear undamped
+// system the trapezoidal work is the elastic energy's change, so K + E is exactly conserved
+// over each interval. At t_n the ledger switches from K_n^- to K_n^+, and
+//   K_n^+ - K_n^- = -1/8 (dt_+^2 - dt_-^2) F_n M^-1 F_n,
+// second order: each is the true kinetic energy 1/2 v_n M v_n less 1/8 dt_+-^2 F_n M^-1 F_n
+// (the leapfrog's modified energy of its own step), and v_n is unique. The ledger's kinetic
+// energy is K_n^+ and the switch is booked in EnergyLedger::step_change, so the residual is
+// the intervals' integration error. Every force that is not a potential's (bulk damping,
+// servo loads and their viscous force, drive reactions) is booked by the same split: the
+// half 1/2 dt_- f_n . v_n-1/2 closes [t_n-1, t_n], the half 1/2 dt_+ f_n . v_n+1/2 is held
+// (pending) and opens [t_n, t_n+1]; gravity and constant forces do dt_+ f . v_n+1/2 exactly.
 //
 // Driven field nodes (Model::node_drives, the back faces of deformable strips): a driven
 // component gets v_n+1/2 = V(t_n + dt/2) exactly; the force that takes, beyond the forces the
-// node receives, is the drive's reaction R_I = m_I (v_n+1/2 - v_n-1/2) / dt - f_I. The nodes
+// node receives, is the drive's reaction R_I = m_I (v_n+1/2 - v_n-1/2) / h_n - f_I. The nodes
 // stay part of the system (their kinetic energy is counted) and the work of R is external
-// work, booked like the servo loads: 1/2 dt R_n . (v_n-1/2 + v_n+1/2), which is what the
-// time-centred kinetic energy sees, so the ledger stays closed.
+// work, booked like the servo loads: 1/2 dt_- R_n . v_n-1/2 + 1/2 dt_+ R_n . v_n+1/2, which
+// is what the kinetic energies K^-, K^+ see, so the ledger stays closed.
 //
 // Servo-loaded node drives (DriveMode::load, the back face of a pressure-loaded strip): the
 // driven nodes move as one carrier (model/model.h NodeDrive); its velocity v_n+1/2 is computed
@@ -34,7 +58,7 @@ namespace sg {
 
 // Cumulative energies since the start of the run (energy units: force x length).
 struct EnergyLedger {
-  double kinetic = 0.0;             // at the last force evaluation (time-centred, see above)
+  double kinetic = 0.0;             // K_n^+ at the last force evaluation (see above)
   double elastic = 0.0;             // strain energy at the last force evaluation
   double external_work = 0.0;       // work of external forces (gravity, loads) so far
   double damping_dissipated = 0.0;  // energy dissipated by bulk damping so far
@@ -44,9 +68,16 @@ struct EnergyLedger {
   // not a property of the third body, and must not count in the bulk share p_wb.
   double servo_dissipated = 0.0;
   double contact_elastic = 0.0;  // elastic energy held by contact springs now
-  // Energy balance residual: W_ext - (K - K0) - (E - E0) - D_bulk - D_contact - D_servo,
-  // with K0, E0
-  // the values at the first force evaluation (E includes the contact springs).
+  // Energy the changes of the time step have added to the scheme's kinetic energy so far:
+  // the sum over force evaluations of K_n^+ - K_n^- = -1/8 (dt_+^2 - dt_-^2) F_n . F_n / m
+  // (see above). 0 while the step does not change. A numerical term, kept apart from the
+  // residual (see there).
+  double step_change = 0.0;
+  // Energy balance residual:
+  //   W_ext + S - (K - K0) - (E - E0) - D_bulk - D_contact - D_servo,
+  // with S = step_change and K0, E0 the values at the first force evaluation (E includes the
+  // contact springs). With S counted the residual is the sum of the intervals' integration
+  // errors: for a linear undamped system it stays at round-off under any sequence of steps.
   double initial_kinetic = 0.0, initial_elastic = 0.0;
   double residual() const;
 };
@@ -54,6 +85,10 @@ struct EnergyLedger {
 struct SolverState {
   double time = 0.0;  // time of the current displacements (the ledger is one step behind)
   long step = 0;
+  // The last step taken, t_n - t_n-1 (0: none yet). The next step's velocity update and the
+  // ledger's closing halves depend on it (see the header), so it is state: checkpointed, and
+  // restored with a rejected step.
+  double previous_dt = 0.0;
   EnergyLedger energy;
 };
 
@@ -99,14 +134,22 @@ class ExplicitSolver {
   struct ServoPower {
     double load_old = 0.0, load_new = 0.0, servo_old = 0.0, servo_new = 0.0;
   };
-  // The velocities v_n+1/2 of the node drives' carriers (mode load), written to the drive's
-  // imposed-velocity slots of `drive_data` (6 per drive, see step()); their servo power.
-  ServoPower advance_node_carriers(double dt, double* drive_data) const;
-  // Advances rigid bodies; returns (kinetic energy time-centred, external power of gravity
-  // and constant forces). Books the load work and servo dissipation of DriveMode::load
-  // degrees of freedom in the ledger itself (they are split over two steps), those of the
-  // rigid bodies added to `servo` (the node carriers' part).
-  std::pair<double, double> advance_rigid_bodies(double dt, ServoPower servo);
+  // The velocities v_n+1/2 of the node drives' carriers (mode load), advanced over
+  // h = (dt_prev + dt) / 2, written to the drive's imposed-velocity slots of `drive_data`
+  // (6 per drive, see step()); their servo power.
+  ServoPower advance_node_carriers(double h, double* drive_data) const;
+  // What advance_rigid_bodies adds to the nodes' sums in step().
+  struct RigidUpdate {
+    double kinetic = 0.0;         // time-centred, 1/2 m v_n-1/2 v_n+1/2
+    double external_power = 0.0;  // of gravity, constant forces and velocity drives
+    double force_power = 0.0;     // F_n . v_n+1/2, F_n the total force of the update
+    double force_square = 0.0;    // F_n . F_n / m
+  };
+  // Advances rigid bodies over the step dt that follows one of dt_prev. Books the load work
+  // and servo dissipation of DriveMode::load degrees of freedom in the ledger itself (they
+  // are split over two steps), those of the rigid bodies added to `servo` (the node
+  // carriers' part).
+  RigidUpdate advance_rigid_bodies(double dt, double dt_prev, ServoPower servo);
   void wrap_periodic_bodies();
 };
 
