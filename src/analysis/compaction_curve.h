@@ -12,10 +12,8 @@
 //                                                 force/length, the stress of a 2D run)
 //   phi(t)   = A(t) / (W h(t))                    solid fraction: grain area over the box area
 //                                                 below the lid
-// series.csv's force and time are those of the start of the row's step, its positions those
-// after the step (io/run.cpp writes the row once the step is taken): h is therefore one step
-// of lid travel ahead of its time (v dt: 6e-6 in tests/render/test_compaction_analyze.cpp, 1.6e-6
-// of h; nothing once the lid has stopped).
+// Every column of a series.csv row describes the row's time t (io/run.cpp reads the positions
+// before the step whose force evaluation the row reports), so h, sigma and phi are one instant.
 //
 // W is the inner width between the side walls. A(t) is the total grain area: from the grain
 // snapshots (grains/NNNNNN.csv, each grain's current contour area, which sees deformable grains

@@ -299,7 +299,11 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
     row << '\n';
     append_series();
   }
-  // One row: the ledger describes the state at time t (where the forces were evaluated).
+  // One row describes one instant t_n, that of the step's force evaluation: the ledger (one
+  // step behind the positions, solver/explicit_solver.h) and the forces are computed during
+  // the step, so the row is written after it, but the positions must be those at t_n, taken
+  // before the step (`row_positions`), not the updated ones of t_n+1.
+  std::vector<Vec2> row_positions(driven.size());
   auto write_series_row = [&](double t, long s) {
     const EnergyLedger& e = solver.state().energy;
     row << t << ',' << s << ',' << last_dt << ',' << e.kinetic << ',' << e.elastic << ','
@@ -311,8 +315,8 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
       loop.top_force_sum_y += f.y();
       ++loop.top_force_rows;
     }
-    for (BodyId b : driven) {
-      const Vec2 f = driven_force(b), x = driven_position(b);
+    for (std::size_t k = 0; k < driven.size(); ++k) {
+      const Vec2 f = driven_force(driven[k]), x = row_positions[k];
       row << ',' << f.x() << ',' << f.y() << ',' << x.x() << ',' << x.y();
     }
     row << '\n';
@@ -361,8 +365,14 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
       write_field();
       loop.next_field_time += scenario.field_period;
     }
+    const bool row_due = t >= loop.next_series_time - tolerance;
+    if (row_due)
+      for (std::size_t k = 0; k < driven.size(); ++k)
+        row_positions[k] = driven_position(driven[k]);
     last_dt = controller.advance();
-    if (t >= loop.next_series_time - tolerance) {
+    // A rejected step may roll back to a state older than (t, s) (step_controller.h); then
+    // the step taken did not start here, and the row waits until the run is back at its time.
+    if (row_due && solver.state().step == s + 1) {
       write_series_row(t, s);
       loop.next_series_time += scenario.series_period;
     }

@@ -91,6 +91,8 @@ TinyCompactionRun simulate() {
   run.width = s.compaction_box->width;
   run.final_height = info.final_height;
   run.stop_time = info.stop_time;
+  run.lid_velocity = s.compaction_box->lid_velocity;
+  run.lid_ramp_time = s.compaction_box->lid_ramp_time;
   return run;
 }
 

@@ -13,9 +13,11 @@ struct TinyCompactionRun {
   // The run folder; <dir>/sample/sample.json is what `softgrain generate` writes for the
   // scenario (the same folder: <output root>/<name>/sample).
   std::filesystem::path dir;
-  double width = 0.0;         // W
-  double final_height = 0.0;  // the builder's CompactionBoxInfo::final_height
-  double stop_time = 0.0;     // when the builder's lid history stops
+  double width = 0.0;          // W
+  double final_height = 0.0;   // the builder's CompactionBoxInfo::final_height
+  double stop_time = 0.0;      // when the builder's lid history stops
+  double lid_velocity = 0.0;   // V, reached after the ramp ...
+  double lid_ramp_time = 0.0;  // ... of this duration (speed linear in time, 0 -> V)
 };
 
 const TinyCompactionRun& tiny_compaction_run();
