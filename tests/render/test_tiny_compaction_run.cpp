@@ -2,6 +2,7 @@
 #include <omp.h>
 
 #include <string>
+#include <system_error>
 
 #include "io/run.h"
 #include "render/sample_report.h"
@@ -100,6 +101,16 @@ TinyCompactionRun simulate() {
 
 const TinyCompactionRun& tiny_compaction_run() {
   static const TinyCompactionRun run = simulate();
+  // The folder goes when the test process ends (ctest runs each test in a process of its own,
+  // each simulating the box into its own folder; they used to pile up in the temp directory).
+  struct RemovedAtExit {
+    fs::path root;
+    ~RemovedAtExit() {
+      std::error_code ignored;
+      fs::remove_all(root, ignored);
+    }
+  };
+  static const RemovedAtExit cleanup{run.dir.parent_path().parent_path()};  // <root>/out/<name>
   return run;
 }
 
