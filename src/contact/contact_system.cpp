@@ -50,7 +50,7 @@ ContactSystem::ContactSystem(const Model& model, const MaterialPairTable& laws,
 }
 
 void ContactSystem::update_geometry(const Model& model) {
-  compute_contour_positions(model, positions_);
+  compute_contour_positions(model, positions_, &rotations_);
   if (previous_positions_.size() != positions_.size()) previous_positions_ = positions_;
   const std::size_t n = positions_.size();
   segment_start_.resize(n);
@@ -236,7 +236,7 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model) {
   std::vector<ContactHistoryEntry>& next = next_histories_;
   next.clear();
   records_.clear();
-  NodeState& nodes = model.nodes;
+  rotation_moment_.assign(model.bodies.size(), 0.0);
   auto add_force_at_point = [&](int point, const Vec2& f, const Vec2& at) {
     const BodyId b = node_body_[static_cast<std::size_t>(point)];
     const Body& body = model.bodies[static_cast<std::size_t>(b)];
@@ -248,15 +248,9 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model) {
       if (model.periodic_x) arm.x() -= period * std::round(arm.x() / period);
       model.rigid.torque[r] += cross(arm, f);
     } else {
-      const int node = body.node_begin + (point - body.contour_begin);
-      const ShapeRows& rows = model.node_rows;
-      for (auto k = rows.offset[static_cast<std::size_t>(node)];
-           k < rows.offset[static_cast<std::size_t>(node) + 1]; ++k) {
-        const auto j =
-            static_cast<std::size_t>(body.node_begin + rows.node[static_cast<std::size_t>(k)]);
-        nodes.fx[j] += rows.value[static_cast<std::size_t>(k)] * f.x();
-        nodes.fy[j] += rows.value[static_cast<std::size_t>(k)] * f.y();
-      }
+      rotation_moment_[static_cast<std::size_t>(b)] +=
+          add_contour_node_force(model, body, body.node_begin + (point - body.contour_begin), f,
+                                 rotations_[static_cast<std::size_t>(b)]);
     }
   };
   for (std::size_t g = 0; g < groups.size(); ++g) {
@@ -278,6 +272,9 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model) {
     if (new_history[g].active || new_history[g].stored_slip != 0.0)
       next.push_back({r.slave_point, r.master_body, new_history[g]});
   }
+  // The moments of the contour points' hat offsets, spread once per body (kinematics.h).
+  for (std::size_t b = 0; b < model.bodies.size(); ++b)
+    add_body_rotation_moment(model, model.bodies[b], rotation_moment_[b], rotations_[b]);
   histories_.swap(next);
   // A swap, not a copy: positions_ is recomputed in full at the next evaluation.
   previous_positions_.swap(positions_);

@@ -13,7 +13,8 @@
 //   5. force f = l (p_n n + p_t t) on the slave point (l its current tributary length), -f on
 //      the master segment's end points with weights (1 - s, s): action equals reaction;
 //      forces on a deformable body's contour point are spread to the MLS parameters with the
-//      node's own row N_J(X_I), on a rigid body they add to its force and torque.
+//      transpose of its position's derivative (its contact-consistent row, model/kinematics.h
+//      add_contour_node_force), on a rigid body they add to its force and torque.
 //
 // Determinism: narrow phase and laws run in parallel per candidate group into per-group
 // results; forces are scattered serially in candidate order.
@@ -23,6 +24,7 @@
 #include "contact/contact_law.h"
 #include "contact/material_pair_table.h"
 #include "contact/node_segment.h"
+#include "model/kinematics.h"
 #include "model/model.h"
 
 namespace sg {
@@ -128,6 +130,8 @@ class ContactSystem {
   std::vector<ContactHistory> new_history_;
   std::vector<double> stored_;
   std::vector<ContactHistoryEntry> next_histories_;
+  std::vector<BodyRotation> rotations_;  // of each body at this evaluation (kinematics.h)
+  std::vector<double> rotation_moment_;  // per body: sum of its contour points' moments
   void update_geometry(const Model& model);
   std::vector<int> group_history_;  // per group: its entry in histories_, -1: none (scratch)
 };

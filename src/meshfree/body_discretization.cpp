@@ -1,6 +1,7 @@
 #include "meshfree/body_discretization.h"
 
 #include "core/error.h"
+#include "meshfree/contour_rows.h"
 #include "meshfree/triangle_quadrature.h"
 
 namespace sg {
@@ -29,8 +30,23 @@ BodyDiscretization discretize_mesh(DomainMesh mesh, const DiscretizationParams& 
       d.gauss_position.push_back(x);
     }
   }
-  for (const Vec2& x : nodes)
-    mls.evaluate(x, d.node_rows);
+  // Contour nodes get the contact-consistent row of meshfree/contour_rows.h, the others
+  // the MLS row at their own position.
+  const auto boundary = static_cast<std::size_t>(d.mesh.boundary_count);
+  ShapeRows at_hat;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    if (i >= boundary) {
+      mls.evaluate(nodes[i], d.node_rows);
+      continue;
+    }
+    const HatQuadrature hat =
+        hat_quadrature(nodes[i], nodes[(i + boundary - 1) % boundary], nodes[(i + 1) % boundary]);
+    at_hat = ShapeRows{};
+    for (const Vec2& x : hat.point)
+      mls.evaluate(x, at_hat);
+    append_contour_row(at_hat, {}, hat, d.node_rows, nullptr);
+    d.contour_offset.push_back(nodes[i] - hat.centroid);
+  }
 
   d.lumped_volume.assign(nodes.size(), 0.0);
   for (std::size_t g = 0; g < d.gauss_rows.points(); ++g)

@@ -26,7 +26,10 @@ struct BodyDiscretization {
   // One row per node, evaluated at the node's reference position: the physical position of
   // node I is X_I + sum_J N_J(X_I) u_J (MLS does not interpolate), and a force applied there
   // is spread back with the same N_J(X_I).
+  // Contour nodes [0, mesh.boundary_count) get instead the contact-consistent row of
+  // meshfree/contour_rows.h, and contour_offset holds their d = X - Xbar (same file).
   ShapeRows node_rows;
+  std::vector<Vec2> contour_offset;
   std::vector<double> support_radius;
   // integral of N_I over the body (row-sum lumping): nodal mass = density * lumped_volume.
   // Partition of unity makes the total exact: sum_I lumped_volume_I = area.

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "meshfree/contour_rows.h"
 #include "meshfree/mls.h"
 #include "meshfree/triangle_quadrature.h"
 
@@ -195,10 +196,32 @@ PeriodicStripDiscretization discretize_periodic_strip(const Polygon& surface,
     integrate(tri, false);
   for (const auto& tri : seam)
     integrate(tri, true);
-  for (const Vec2& x : nodes) {
-    scratch = ShapeRows{};
-    mls.evaluate(x, scratch);
-    append_mapped_row(scratch, 0, n, radius, d.node_rows, strip.node_image, x, body_name);
+  // Surface (contour) points get the contact-consistent row of meshfree/contour_rows.h, over
+  // the extended node set: the first point's previous neighbour is the last one shifted back
+  // across the seam, the last point's next one the first shifted by closing_shift_x.
+  ShapeRows at_hat, mapped;
+  std::vector<std::int8_t> mapped_image;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2& x = nodes[i];
+    if (i >= n_surface) {
+      scratch = ShapeRows{};
+      mls.evaluate(x, scratch);
+      append_mapped_row(scratch, 0, n, radius, d.node_rows, strip.node_image, x, body_name);
+      continue;
+    }
+    const Vec2 shift(closing_shift_x, 0.0);
+    const Vec2 previous = i > 0 ? nodes[i - 1] : Vec2(nodes[n_surface - 1] - shift);
+    const Vec2 next = i + 1 < n_surface ? nodes[i + 1] : Vec2(nodes[0] + shift);
+    const HatQuadrature hat = hat_quadrature(x, previous, next);
+    mapped = ShapeRows{};
+    mapped_image.clear();
+    for (const Vec2& q : hat.point) {
+      scratch = ShapeRows{};
+      mls.evaluate(q, scratch);
+      append_mapped_row(scratch, 0, n, radius, mapped, mapped_image, q, body_name);
+    }
+    append_contour_row(mapped, mapped_image, hat, d.node_rows, &strip.node_image);
+    d.contour_offset.push_back(x - hat.centroid);
   }
 
   // Row-sum lumping as in discretize_mesh: nodal volume = integral of N_I over one period.

@@ -1,5 +1,7 @@
 #include "model/kinematics.h"
 
+#include <cmath>
+
 namespace sg {
 
 namespace {
@@ -72,8 +74,35 @@ int body_of_node(const Model& model, int node) {
 }
 }  // namespace
 
-Vec2 node_position(const Model& model, int node) {
-  const int base = model.bodies[static_cast<std::size_t>(body_of_node(model, node))].node_begin;
+Vec2 BodyRotation::rotate(const Vec2& d) const {
+  const double r = std::sqrt(r2()), c = a / r, s = b / r;
+  return Vec2(c * d.x() - s * d.y(), s * d.x() + c * d.y());
+}
+
+BodyRotation body_rotation(const Model& model, BodyId body) {
+  const Body& b = model.bodies[static_cast<std::size_t>(body)];
+  BodyRotation q;
+  if (b.kind != BodyKind::deformable) return q;
+  for (int i = b.node_begin; i < b.node_end; ++i) {
+    const auto j = static_cast<std::size_t>(i);
+    const double ux = model.nodes.ux[j], uy = model.nodes.uy[j];
+    const double cx = model.mean_gradient_x[j], cy = model.mean_gradient_y[j];
+    q.a += ux * cx + uy * cy;  // F11 + F22 - 2
+    q.b += uy * cx - ux * cy;  // F21 - F12
+  }
+  return q;
+}
+
+namespace {
+
+// The hat offset of `node` if it is a contour node of a deformable body, else zero.
+Vec2 hat_offset(const Model& model, const Body& body, int node) {
+  if (body.kind != BodyKind::deformable || node >= body.boundary_end) return Vec2::Zero();
+  return model
+      .contour_hat_offset[static_cast<std::size_t>(body.contour_begin + node - body.node_begin)];
+}
+
+Vec2 row_position(const Model& model, int base, int node) {
   const auto n = static_cast<std::size_t>(node);
   Vec2 x(model.nodes.ref_x[n], model.nodes.ref_y[n]);
   for_row(model.node_rows, n, [&](std::size_t k) {
@@ -83,14 +112,75 @@ Vec2 node_position(const Model& model, int node) {
   return x;
 }
 
+}  // namespace
+
+Vec2 contour_node_position(const Model& model, const Body& body, int node,
+                           const BodyRotation& rotation) {
+  const Vec2 d = hat_offset(model, body, node);
+  return row_position(model, body.node_begin, node) + (rotation.rotate(d) - d);
+}
+
+Vec2 node_position(const Model& model, int node) {
+  const int b = body_of_node(model, node);
+  const Body& body = model.bodies[static_cast<std::size_t>(b)];
+  if (hat_offset(model, body, node) == Vec2::Zero())
+    return row_position(model, body.node_begin, node);
+  return contour_node_position(model, body, node, body_rotation(model, b));
+}
+
 Vec2 node_velocity(const Model& model, int node) {
-  const int base = model.bodies[static_cast<std::size_t>(body_of_node(model, node))].node_begin;
+  const int b = body_of_node(model, node);
+  const Body& body = model.bodies[static_cast<std::size_t>(b)];
+  const int base = body.node_begin;
   Vec2 v(0, 0);
   for_row(model.node_rows, static_cast<std::size_t>(node), [&](std::size_t k) {
     const auto j = static_cast<std::size_t>(base + model.node_rows.node[k]);
     v += model.node_rows.value[k] * Vec2(model.nodes.vx[j], model.nodes.vy[j]);
   });
+  const Vec2 d = hat_offset(model, body, node);
+  if (d != Vec2::Zero()) {
+    // d/dt (Q d) = theta_dot perp(Q d), theta_dot = sum_J dtheta/du_J . v_J.
+    const BodyRotation q = body_rotation(model, b);
+    double theta_dot = 0.0;
+    for (int i = body.node_begin; i < body.node_end; ++i) {
+      const auto j = static_cast<std::size_t>(i);
+      const double cx = model.mean_gradient_x[j], cy = model.mean_gradient_y[j];
+      theta_dot +=
+          (-q.a * cy - q.b * cx) * model.nodes.vx[j] + (q.a * cx - q.b * cy) * model.nodes.vy[j];
+    }
+    v += (theta_dot / q.r2()) * perp(q.rotate(d));
+  }
   return v;
+}
+
+double add_contour_node_force(Model& model, const Body& body, int node, const Vec2& f,
+                              const BodyRotation& rotation) {
+  const auto n = static_cast<std::size_t>(node);
+  const ShapeRows& rows = model.node_rows;
+  NodeState& nodes = model.nodes;
+  for_row(rows, n, [&](std::size_t k) {
+    const auto j = static_cast<std::size_t>(body.node_begin + rows.node[k]);
+    nodes.fx[j] += rows.value[k] * f.x();
+    nodes.fy[j] += rows.value[k] * f.y();
+  });
+  const Vec2 d = hat_offset(model, body, node);
+  if (d == Vec2::Zero()) return 0.0;
+  return f.dot(perp(rotation.rotate(d)));  // f . d(Q d)/dtheta
+}
+
+void add_body_rotation_moment(Model& model, const Body& body, double moment,
+                              const BodyRotation& rotation) {
+  if (moment == 0.0) return;
+  // theta = atan2(b, a): dtheta = (a db - b da) / r^2, with da/du_J = c_J and
+  // db/dux_J = -c_Jy, db/duy_J = c_Jx.
+  const double m = moment / rotation.r2(), a = rotation.a, b = rotation.b;
+  NodeState& nodes = model.nodes;
+  for (int i = body.node_begin; i < body.node_end; ++i) {
+    const auto j = static_cast<std::size_t>(i);
+    const double cx = model.mean_gradient_x[j], cy = model.mean_gradient_y[j];
+    nodes.fx[j] += m * (-a * cy - b * cx);
+    nodes.fy[j] += m * (a * cx - b * cy);
+  }
 }
 
 namespace {
@@ -126,8 +216,10 @@ Vec2 gauss_reference_position(const Model& model, BodyId body, int g) {
   return x;
 }
 
-void compute_contour_positions(const Model& model, std::vector<Vec2>& positions) {
+void compute_contour_positions(const Model& model, std::vector<Vec2>& positions,
+                               std::vector<BodyRotation>* rotations) {
   positions.resize(model.contour_point_count());
+  if (rotations != nullptr) rotations->assign(model.bodies.size(), BodyRotation{});
   const int count = static_cast<int>(model.bodies.size());
 #pragma omp parallel for schedule(dynamic, 16)
   for (int b = 0; b < count; ++b) {
@@ -140,9 +232,11 @@ void compute_contour_positions(const Model& model, std::vector<Vec2>& positions)
         positions[static_cast<std::size_t>(k)] =
             c + rot * model.rigid_contour_offset[static_cast<std::size_t>(k)];
     } else {
+      const BodyRotation q = body_rotation(model, b);
+      if (rotations != nullptr) (*rotations)[static_cast<std::size_t>(b)] = q;
       for (int k = body.contour_begin; k < body.contour_end; ++k)
         positions[static_cast<std::size_t>(k)] =
-            node_position(model, body.node_begin + (k - body.contour_begin));
+            contour_node_position(model, body, body.node_begin + (k - body.contour_begin), q);
     }
   }
 }

@@ -17,9 +17,39 @@ void set_affine_deformation(Model& model, BodyId body, const Mat2& deformation_g
 // Mass-weighted centroid of the reference nodes of a body.
 Vec2 reference_mass_centroid(const Model& model, BodyId body);
 
-// Physical position x_I = X_I + sum_J N_J(X_I) u_J and velocity of node `node` (global).
+// Rotation of a deformable body as a whole: the polar angle theta of its mean deformation
+// gradient F = I + sum_J u_J (x) c_J (Model::mean_gradient_x/y), theta = atan2(F21 - F12,
+// F11 + F22), kept as (a, b) = (F11 + F22, F21 - F12): cos = a / r, sin = b / r, r = |(a, b)|.
+// Exact for a rigid rotation of any size. Contour points rotate their hat offset with it
+// (meshfree/contour_rows.h). (The rotation of each point's own averaged gradient is exact too
+// but couples a block's corner point to the local rotation there: bonded blocks then broke at
+// 0.84 of sigma_c L instead of 0.975.)
+struct BodyRotation {
+  double a = 2.0, b = 0.0;
+  double r2() const { return a * a + b * b; }
+  Vec2 rotate(const Vec2& d) const;  // Q(theta) d
+};
+BodyRotation body_rotation(const Model& model, BodyId body);
+
+// Physical position and velocity of node `node` (global): x_I = X_I + sum_J N_J(X_I) u_J for
+// an interior node; a contour node of a deformable body uses its contact-consistent row R_J
+// (meshfree/contour_rows.h) and its hat offset d (Model::contour_hat_offset) turned with the
+// body: x_I = X_I + sum_J R_J u_J + (Q(theta) - I) d, exact for any rigid motion.
 Vec2 node_position(const Model& model, int node);
 Vec2 node_velocity(const Model& model, int node);
+// The same for contour node `node` of `body`, whose rotation is given (computed once per body).
+Vec2 contour_node_position(const Model& model, const Body& body, int node,
+                           const BodyRotation& rotation);
+
+// Spreads the force `f` applied at a deformable contour node's position to the MLS
+// parameters with the transpose of dx_I/du_J (so that it does exactly the work f . dx_I):
+// adds R_J f to the nodes of the row, and returns the moment f . dx_I/dtheta that the caller
+// sums per body and passes to add_body_rotation_moment.
+double add_contour_node_force(Model& model, const Body& body, int node, const Vec2& f,
+                              const BodyRotation& rotation);
+// Adds moment * dtheta/du_J to every node of `body` (dtheta/du_J from the mean gradients).
+void add_body_rotation_moment(Model& model, const Body& body, double moment,
+                              const BodyRotation& rotation);
 // Deformation gradient and its rate at node `node` (global), from the node's own row.
 Mat2 node_deformation_gradient(const Model& model, int node);
 
@@ -30,7 +60,9 @@ Vec2 gauss_reference_position(const Model& model, BodyId body, int g);
 
 // Current positions of all contour points (Model::contour_body order): boundary-node
 // positions of deformable bodies, rigidly moved points of rigid bodies. Parallel over bodies.
-void compute_contour_positions(const Model& model, std::vector<Vec2>& positions);
+// `rotations` (when not null) receives body_rotation of every body (identity for rigid ones).
+void compute_contour_positions(const Model& model, std::vector<Vec2>& positions,
+                               std::vector<BodyRotation>* rotations = nullptr);
 
 // Totals over all nodes (parameters carry the lumped masses).
 double total_mass(const Model& model);

@@ -49,6 +49,13 @@ BodyId Model::add_deformable_body(const std::string& name, const BodyDiscretizat
                       static_cast<BodyId>(bodies.size()));
   rigid_contour_offset.insert(rigid_contour_offset.end(),
                               static_cast<std::size_t>(d.mesh.boundary_count), Vec2::Zero());
+  // A discretization assembled by hand (tests) may come without offsets: point rows.
+  if (d.contour_offset.size() == static_cast<std::size_t>(d.mesh.boundary_count))
+    contour_hat_offset.insert(contour_hat_offset.end(), d.contour_offset.begin(),
+                              d.contour_offset.end());
+  else
+    contour_hat_offset.insert(contour_hat_offset.end(),
+                              static_cast<std::size_t>(d.mesh.boundary_count), Vec2::Zero());
 
   const double density = materials[static_cast<std::size_t>(material)].density;
   nodes.resize(static_cast<std::size_t>(body.node_end));
@@ -59,6 +66,19 @@ BodyId Model::add_deformable_body(const std::string& name, const BodyDiscretizat
     nodes.mass[g] = density * d.lumped_volume[i];
     nodes.inverse_mass[g] = 1.0 / nodes.mass[g];
   }
+  // Mean gradient weights c_J (Gauss quadrature of grad N_J over the body, over its area).
+  mean_gradient_x.resize(nodes.size(), 0.0);
+  mean_gradient_y.resize(nodes.size(), 0.0);
+  double area = 0.0;
+  for (double w : d.gauss_weight)
+    area += w;
+  for (std::size_t g = 0; g < d.gauss_rows.points(); ++g)
+    for (auto k = d.gauss_rows.offset[g]; k < d.gauss_rows.offset[g + 1]; ++k) {
+      const auto e = static_cast<std::size_t>(k);
+      const auto j = static_cast<std::size_t>(body.node_begin + d.gauss_rows.node[e]);
+      mean_gradient_x[j] += d.gauss_weight[g] / area * d.gauss_rows.dndx[e];
+      mean_gradient_y[j] += d.gauss_weight[g] / area * d.gauss_rows.dndy[e];
+    }
   gauss_rows.append(d.gauss_rows);
   gauss_weight.insert(gauss_weight.end(), d.gauss_weight.begin(), d.gauss_weight.end());
   node_rows.append(d.node_rows);
@@ -155,6 +175,7 @@ BodyId Model::append_rigid(Body body, const std::string& name, const Polygon& po
   body.rigid_index = static_cast<int>(rigid.size());
   for (const Vec2& p : points) {
     rigid_contour_offset.push_back(p - reference);
+    contour_hat_offset.push_back(Vec2::Zero());
     contour_body.push_back(static_cast<BodyId>(bodies.size()));
   }
   for (auto* a : {&rigid.x, &rigid.y, &rigid.theta, &rigid.vx, &rigid.vy, &rigid.omega, &rigid.fx,

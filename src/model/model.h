@@ -162,6 +162,13 @@ struct Model {
   // each point from the centre of mass in the body frame (zero for deformable bodies).
   std::vector<Vec2> rigid_contour_offset;
   std::vector<BodyId> contour_body;  // owner of each contour point
+  // Deformable bodies' contour points: d = X - Xbar, the offset of the point from the centroid
+  // of its hat, which the position rotates with the body (meshfree/contour_rows.h,
+  // model/kinematics.h BodyRotation); zero for rigid bodies.
+  std::vector<Vec2> contour_hat_offset;
+  // Per node of a deformable body: c_J = (1 / A) integral of grad N_J over the body, so that
+  // the body's mean deformation gradient is I + sum_J u_J (x) c_J (kinematics.h).
+  std::vector<double> mean_gradient_x, mean_gradient_y;
   RigidState rigid;
   std::vector<NodeDrive> node_drives;
   Vec2 gravity = Vec2::Zero();  // acceleration (length / time^2)
