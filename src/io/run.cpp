@@ -323,18 +323,29 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
     append_series();
     ++loop.series_rows;
   };
-  auto write_field = [&]() {
+  // Snapshot NNNNNN (fields/, grains/, contacts/) describes one instant t_n, its label in
+  // fields.pvd and contacts.pvd. The fields and grains are the state at t_n, written before the
+  // step (`write_state_files`); the contact network is the step's force evaluation at t_n
+  // (ContactSystem::records()), so it is written after the step (`commit_snapshot`), and so
+  // are the .pvd entries. A snapshot whose step a rejection rolled back is not committed: it
+  // is taken again (same index, files overwritten) when the run is back at its time, like a
+  // series row.
+  auto snapshot_name = [&](const char* extension) {
     char name[32];
-    std::snprintf(name, sizeof name, "%06d.vtu", loop.next_snapshot);
-    write_vtu_snapshot(model, dir / "fields" / name);
-    pvd.add(solver.state().time, std::string("fields/") + name);
+    std::snprintf(name, sizeof name, "%06d.%s", loop.next_snapshot, extension);
+    return std::string(name);
+  };
+  auto write_state_files = [&]() {
+    write_vtu_snapshot(model, dir / "fields" / snapshot_name("vtu"));
+    write_grain_snapshot(model, dir / "grains" / snapshot_name("csv"));
+  };
+  auto commit_snapshot = [&](double t) {
+    const std::string name = snapshot_name("vtu");
+    pvd.add(t, "fields/" + name);
     if (contacts) {
       write_contact_snapshot(*contacts, dir / "contacts" / name);
-      contact_pvd.add(solver.state().time, std::string("contacts/") + name);
+      contact_pvd.add(t, "contacts/" + name);
     }
-    char grains_name[32];
-    std::snprintf(grains_name, sizeof grains_name, "%06d.csv", loop.next_snapshot);
-    write_grain_snapshot(model, dir / "grains" / grains_name);
     ++loop.next_snapshot;
   };
   auto write_checkpoint_now = [&]() {
@@ -361,18 +372,28 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
     }
     const long s = solver.state().step;
     const double t = solver.state().time;
-    if (t >= loop.next_field_time - tolerance) {
-      write_field();
-      loop.next_field_time += scenario.field_period;
-    }
+    // After a rollback the run may be at the time of the last committed snapshot again (when
+    // field_period < dt): that instant is in the collection already.
+    const bool snapshot_due = t >= loop.next_field_time - tolerance &&
+                              (pvd.entries().empty() || t > pvd.entries().back().first);
+    if (snapshot_due) write_state_files();
     const bool row_due = t >= loop.next_series_time - tolerance;
     if (row_due)
       for (std::size_t k = 0; k < driven.size(); ++k)
         row_positions[k] = driven_position(driven[k]);
     last_dt = controller.advance();
     // A rejected step may roll back to a state older than (t, s) (step_controller.h); then
-    // the step taken did not start here, and the row waits until the run is back at its time.
-    if (row_due && solver.state().step == s + 1) {
+    // the step taken did not start here, and the row and the snapshot wait until the run is
+    // back at their time. With the energy check a later rejection rolls back to (t, s) at the
+    // earliest, so what is written here stays the run's state; a failed step without it rolls
+    // back to the last held state, which may be older: rows and snapshots written since then
+    // show the abandoned trajectory (step_controller.h).
+    const bool step_from_here = solver.state().step == s + 1;
+    if (snapshot_due && step_from_here) {
+      commit_snapshot(t);
+      loop.next_field_time += scenario.field_period;
+    }
+    if (row_due && step_from_here) {
       write_series_row(t, s);
       loop.next_series_time += scenario.series_period;
     }
@@ -397,7 +418,19 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
   }
   const long steps_here = solver.state().step - first_step;
   if (summary.completed) {
-    write_field();
+    // The final state has had no force evaluation: its contact network is evaluated here,
+    // on a copy of the state that is put back after (the evaluation moves the contact
+    // histories and the rigid bodies' forces on; nothing else of the run changes).
+    write_state_files();
+    if (contacts) {
+      StateSnapshot final_state;
+      capture_state(solver, contacts.get(), final_state);
+      contacts->add_contact_forces(model);
+      commit_snapshot(solver.state().time);
+      restore_state(final_state, solver, contacts.get());
+    } else {
+      commit_snapshot(solver.state().time);
+    }
     series.close();
     std::filesystem::rename(partial_series, series_path);
   }
