@@ -16,6 +16,7 @@
 #include <regex>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "geometry/vec2.h"
@@ -29,8 +30,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The folder of this test process, removed when the process ends (ctest runs every test in a
+// process of its own: the folders would pile up in the temp directory).
 fs::path temp_root() {
-  return scenes::process_temp_dir("contact_snapshots");
+  struct RemovedAtExit {
+    fs::path root;
+    ~RemovedAtExit() {
+      std::error_code ignored;
+      fs::remove_all(root, ignored);
+    }
+  };
+  static const RemovedAtExit folder{scenes::process_temp_dir("contact_snapshots")};
+  return folder.root;
 }
 
 std::string read_text(const fs::path& path) {
