@@ -402,7 +402,7 @@ TEST(Mixed, RigidAndDeformableGrainsReceiveOppositeContactForces) {
 // the force of a contour point spread by N_J(X_i), a uniform pull was not balanced by a
 // uniform stress (the second contour point from each corner carried +12-14% of the mean
 // traction) and the brittle interface unzipped from there at 0.89-0.92 c L, at every node
-// spacing, penalty and step tried. With hat-averaged rows the peak is -2.2% from c L here
+// spacing, penalty and step tried. With hat-averaged rows the peak is -2.0% from c L here
 // (h = 0.1 / 0.05 / 0.025: -4.4 / -2.2 / -5.9% with 3 Gauss points per cell side,
 // -3.7 / -2.5 / -2.7% with 6).
 TEST(CohesiveDeformable, BondedBlocksSeparateAtSigmaTimesLength) {
