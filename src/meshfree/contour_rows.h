@@ -20,22 +20,23 @@
 // used for both the point's displacement and the spreading of its force, so that the two are
 // work-conjugate (energy balance) and contacts keep action = reaction. Bonded blocks then
 // separate at 0.956 / 0.978 / 0.941 of sigma_c L for node spacings 0.1 / 0.05 / 0.025 with 3
-// Gauss points per triangle, 0.963 / 0.975 / 0.973 with 6. Partition of unity carries over (sum_J R_J = 1: translations are exact), but the
-// average of a linear field is its value at the hat centroid Xbar_i = sum w x / sum w, which
-// lies inside a curved or cornered contour: a rigid rotation Q would move the point by
-// (Q - I) Xbar_i instead of (Q - I) X_i, and a disc turned half a revolution would look
-// inflated by 2 |X_i - Xbar_i| ~ h^2 / (3 r). The position therefore adds the offset
-// d_i = X_i - Xbar_i rotated with the material around it (model/kinematics.h):
+// Gauss points per triangle, 0.963 / 0.975 / 0.973 with 6. Partition of unity carries over (sum_J
+// R_J = 1: translations are exact), but the average of a linear field is its value at the hat
+// centroid Xbar_i = sum w x / sum w, which lies inside a curved or cornered contour: a rigid
+// rotation Q would move the point by (Q - I) Xbar_i instead of (Q - I) X_i, and a disc turned half
+// a revolution would look inflated by 2 |X_i - Xbar_i| ~ h^2 / (3 r). The position therefore adds
+// the offset d_i = X_i - Xbar_i rotated with the material around it (model/kinematics.h):
 //
 //   x_i = X_i + sum_J R_J u_J + (Q(theta) - I) d_i,  theta the polar rotation angle of the
 //   body's mean deformation gradient F = I + sum_J u_J (x) c_J, c_J = (1/A) int grad N_J dA
 //   (Model::mean_gradient_x/y; one angle per body, its moment spread once per body),
 //
 // exact for any rigid motion. (Turning d_i with the point's own hat-averaged F instead
-// couples the corner points to the local rotation: the bonded blocks broke at 0.84.) (A linear correction (X_i - Xbar_i) . grad R_J in the row
-// itself is exact too but stiffens the corner points of a block: the bonded blocks then
-// broke at 0.79 of sigma_c L.) On a straight stretch d_i = 0 and the row is the consistent
-// row itself. Gradients of the row: hat-weighted averages of grad N_J.
+// couples the corner points to the local rotation: the bonded blocks broke at 0.84.) (A linear
+// correction (X_i - Xbar_i) . grad R_J in the row itself is exact too but stiffens the corner
+// points of a block: the bonded blocks then broke at 0.79 of sigma_c L.) On a straight stretch d_i
+// = 0 and the row is the consistent row itself. Gradients of the row: hat-weighted averages of grad
+// N_J.
 #include <array>
 #include <cstdint>
 #include <span>

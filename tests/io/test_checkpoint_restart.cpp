@@ -189,22 +189,7 @@ series_period = 0.002
 field_period = 0.05
 checkpoint_period = 0.05
 )" + scenes::kTinyScenarioBody +
-         R"(
-[periodic]
-x_min = -3.0
-x_max = 3.0
-[[grains]]
-name = "crossing"
-center = [2.4, -0.1]
-radius = 0.3
-material = "soft"
-velocity = [4.0, 0.0]
-[[grains]]
-name = "waiting"
-center = [-2.6, -0.1]
-radius = 0.3
-material = "soft"
-)";
+         scenes::kSeamGrains;
 }
 
 TEST(CheckpointRestart, GrainCrossingTheSeamResumesExactly) {

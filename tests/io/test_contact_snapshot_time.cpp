@@ -276,22 +276,7 @@ series_period = 0.002
 field_period = 0.001
 checkpoint_period = 0
 )") + scenes::kTinyScenarioBody +
-                           R"(
-[periodic]
-x_min = -3.0
-x_max = 3.0
-[[grains]]
-name = "crossing"
-center = [2.4, -0.1]
-radius = 0.3
-material = "soft"
-velocity = [4.0, 0.0]
-[[grains]]
-name = "waiting"
-center = [-2.6, -0.1]
-radius = 0.3
-material = "soft"
-)";
+                           scenes::kSeamGrains;
   const RunFolder r = run("seam.toml", text);
   const std::string log = read_text(r.dir / "run.log");
   ASSERT_NE(log.find(" 1 rejected"), std::string::npos) << log;

@@ -42,4 +42,21 @@ inline Model single_disc(const MaterialDef& material, double radius, double spac
   return model;
 }
 
+// A flat rubber strip (E = 100, nu = 0.3, Rayleigh alpha 0.01) below y = 0, back face at
+// y = -1, periodic over [0, 10), node spacing 0.1: mass 10. Its back face has a node drive
+// (Body::node_drive), free until the caller sets its modes.
+inline BodyId add_flat_rubber_strip(Model& model) {
+  model.periodic_x = true;
+  model.x_min = 0.0;
+  model.x_max = 10.0;
+  MaterialDef rubber = elastic_material(MaterialLaw::neo_hookean, 0.01, 0.3, 100.0);
+  rubber.name = "rubber";
+  const MaterialId m = model.add_material(rubber);
+  const double h = 0.1;
+  Polygon surface;
+  for (int k = 99; k >= 0; --k)
+    surface.emplace_back(k * h, 0.0);
+  return model.add_deformable_strip("strip", surface, -10.0, -1.0, m, discretization(h));
+}
+
 }  // namespace sg::scenes

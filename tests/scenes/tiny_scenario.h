@@ -46,4 +46,22 @@ material = "hard"
 rigid = true
 )";
 
+// Appended to kTinyScenarioBody: the scene made periodic over [-3, 3) with two more soft
+// grains that meet across the seam x = 3 (one thrown at 4 in +x) and bond.
+inline constexpr const char* kSeamGrains = R"([periodic]
+x_min = -3.0
+x_max = 3.0
+[[grains]]
+name = "crossing"
+center = [2.4, -0.1]
+radius = 0.3
+material = "soft"
+velocity = [4.0, 0.0]
+[[grains]]
+name = "waiting"
+center = [-2.6, -0.1]
+radius = 0.3
+material = "soft"
+)";
+
 }  // namespace sg::scenes

@@ -10,31 +10,16 @@
 
 #include "core/error.h"
 #include "model/kinematics.h"
+#include "scenes/free_grains.h"
 #include "solver/explicit_solver.h"
 #include "solver/stable_time_step.h"
 
 namespace sg {
 namespace {
 
-// A flat rubber strip below y = 0 (back face at y = -1), period 10, h = 0.1: mass 10.
+// The shared flat rubber strip (tests/scenes/free_grains.h): period 10, h = 0.1, mass 10.
 BodyId add_strip(Model& model) {
-  model.periodic_x = true;
-  model.x_min = 0.0;
-  model.x_max = 10.0;
-  MaterialDef rubber;
-  rubber.name = "rubber";
-  rubber.young = 100.0;
-  rubber.poisson = 0.3;
-  rubber.density = 1.0;
-  rubber.damping = 0.01;
-  const MaterialId m = model.add_material(rubber);
-  const double h = 0.1;
-  Polygon surface;
-  for (int k = 99; k >= 0; --k)
-    surface.emplace_back(k * h, 0.0);
-  DiscretizationParams params;
-  params.mesh.spacing = h;
-  return model.add_deformable_strip("strip", surface, -10.0, -1.0, m, params);
+  return scenes::add_flat_rubber_strip(model);
 }
 
 // Under gravity (g = -1, weight -10) the strip hangs from its back face, which is pulled up by

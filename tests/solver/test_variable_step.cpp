@@ -45,19 +45,7 @@ std::unique_ptr<Scene> servo_strip() {
   auto s = std::make_unique<Scene>();
   Model& model = s->model;
   model.gravity = Vec2(0.0, -1.0);
-  model.periodic_x = true;
-  model.x_min = 0.0;
-  model.x_max = 10.0;
-  MaterialDef rubber = scenes::elastic_material(MaterialLaw::neo_hookean, 0.01, 0.3, 100.0);
-  rubber.name = "rubber";
-  const MaterialId m = model.add_material(rubber);
-  const double h = 0.1;
-  Polygon surface;
-  for (int k = 99; k >= 0; --k)
-    surface.emplace_back(k * h, 0.0);
-  DiscretizationParams params;
-  params.mesh.spacing = h;
-  const BodyId strip = model.add_deformable_strip("strip", surface, -10.0, -1.0, m, params);
+  const BodyId strip = scenes::add_flat_rubber_strip(model);
   NodeDrive& d = model.node_drives[static_cast<std::size_t>(
       model.bodies[static_cast<std::size_t>(strip)].node_drive)];
   d.mode[0] = DriveMode::velocity;
