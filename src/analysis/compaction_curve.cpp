@@ -125,18 +125,7 @@ std::vector<SummaryEntry> compaction_summary_entries(const CompactionCurve& c) {
 }
 
 std::string format_compaction_table(const CompactionCurve& curve) {
-  const auto entries = compaction_summary_entries(curve);
-  std::size_t key_width = 8;
-  for (const auto& e : entries)
-    key_width = std::max(key_width, e.key.size());
-  std::ostringstream out;
-  for (const auto& e : entries) {
-    std::ostringstream value;
-    value << std::setprecision(6) << e.value;
-    out << std::left << std::setw(static_cast<int>(key_width)) << e.key << "  " << std::right
-        << std::setw(14) << value.str() << "  " << e.unit << '\n';
-  }
-  return out.str();
+  return format_summary_rows(compaction_summary_entries(curve), 8);
 }
 
 }  // namespace sg

@@ -102,9 +102,11 @@ std::vector<SummaryEntry> summary_entries(const AnalysisSummary& s) {
   return e;
 }
 
-std::string summary_json(const AnalysisSummary& summary) {
+std::string summary_json(const AnalysisSummary& summary, const std::vector<SummaryEntry>& extra) {
   nlohmann::ordered_json quantities = nlohmann::ordered_json::object();
-  for (const auto& entry : summary_entries(summary)) {
+  std::vector<SummaryEntry> entries = summary_entries(summary);
+  entries.insert(entries.end(), extra.begin(), extra.end());
+  for (const auto& entry : entries) {
     nlohmann::ordered_json q;
     // JSON has no NaN: an unknown value is null, which a reader cannot mistake for 0.
     if (std::isfinite(entry.value))
@@ -126,6 +128,16 @@ void write_summary_json(const std::string& path, const AnalysisSummary& summary)
   write_file_atomically(path, summary_json(summary));
 }
 
+std::string format_summary_rows(const std::vector<SummaryEntry>& entries, std::size_t key_width) {
+  for (const auto& e : entries)
+    key_width = std::max(key_width, e.key.size());
+  std::ostringstream out;
+  for (const auto& e : entries)
+    out << std::left << std::setw(static_cast<int>(key_width)) << e.key << "  " << std::right
+        << std::setw(14) << format_value(e.value) << "  " << e.unit << '\n';
+  return out.str();
+}
+
 std::string format_summary_table(const AnalysisSummary& summary) {
   const auto entries = summary_entries(summary);
   std::size_t key_width = 8;
@@ -136,10 +148,7 @@ std::string format_summary_table(const AnalysisSummary& summary) {
       << "  " << std::right << std::setw(14) << "value"
       << "  unit\n";
   out << std::string(key_width + 2 + 14 + 2 + 11, '-') << '\n';
-  for (const auto& e : entries)
-    out << std::left << std::setw(static_cast<int>(key_width)) << e.key << "  " << std::right
-        << std::setw(14) << format_value(e.value) << "  " << e.unit << '\n';
-  return out.str();
+  return out.str() + format_summary_rows(entries, key_width);
 }
 
 }  // namespace sg

@@ -40,13 +40,19 @@ struct SummaryEntry {
 // definitions for both the JSON and the table.
 std::vector<SummaryEntry> summary_entries(const AnalysisSummary& summary);
 
-// The JSON document as text (tests parse it back).
-std::string summary_json(const AnalysisSummary& summary);
+// The JSON document as text (tests parse it back); `extra` entries (e.g.
+// compaction_summary_entries) follow the summary's own quantities.
+std::string summary_json(const AnalysisSummary& summary,
+                         const std::vector<SummaryEntry>& extra = {});
 
 // Writes <path> atomically (write "<path>.tmp", then rename).
 void write_summary_json(const std::string& path, const AnalysisSummary& summary);
 
 // A human-readable table: key, value, unit, one line each; absent values shown as "-".
 std::string format_summary_table(const AnalysisSummary& summary);
+
+// The rows of that table for `entries` (no header), keys padded to at least `key_width`:
+// for other lists of entries in the same layout (e.g. compaction_summary_entries).
+std::string format_summary_rows(const std::vector<SummaryEntry>& entries, std::size_t key_width);
 
 }  // namespace sg

@@ -247,16 +247,9 @@ void analyze_compaction(AnalyzeResult& r, const Series& series, const Compaction
 }
 
 std::string json_document(const AnalyzeResult& r, const fs::path& run_dir) {
-  nlohmann::ordered_json doc = nlohmann::ordered_json::parse(summary_json(r.summary));
-  if (r.compaction) {
-    for (const SummaryEntry& e : compaction_summary_entries(*r.compaction)) {
-      nlohmann::ordered_json q;
-      q["value"] = e.value;
-      q["unit"] = e.unit;
-      q["definition"] = e.definition;
-      doc["quantities"][e.key] = std::move(q);
-    }
-  }
+  nlohmann::ordered_json doc = nlohmann::ordered_json::parse(
+      summary_json(r.summary, r.compaction ? compaction_summary_entries(*r.compaction)
+                                           : std::vector<SummaryEntry>{}));
   doc["run"] = fs::absolute(run_dir).lexically_normal().string();
   nlohmann::ordered_json params = nlohmann::ordered_json::object();
   for (const ParameterSource& p : r.parameter_sources) {

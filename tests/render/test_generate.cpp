@@ -11,47 +11,14 @@
 #include "render/sample_report.h"
 #include "render/snapshot_renderer.h"
 #include "scenes/scenario_files.h"
+#include "scenes/tiny_scenario.h"
 
 namespace sg {
 namespace {
 
 namespace fs = std::filesystem;
 
-const char* kMaterials = R"(
-[time]
-duration = 1.0
-
-[discretization]
-node_spacing = 0.15
-
-[[materials]]
-name = "soft"
-young = 10.0
-poisson = 0.4
-damping = 0.01
-
-[[materials]]
-name = "hard"
-young = 1000.0
-
-[[contact_laws]]
-materials = ["soft", "soft"]
-law = "coulomb"
-normal_stiffness = 1000.0
-friction = 0.5
-
-[[contact_laws]]
-materials = ["soft", "hard"]
-law = "coulomb"
-normal_stiffness = 1000.0
-friction = 0.5
-
-[[contact_laws]]
-materials = ["hard", "hard"]
-law = "coulomb"
-normal_stiffness = 1000.0
-friction = 0.5
-)";
+const std::string kMaterials = std::string("[time]\nduration = 1.0\n") + scenes::kSoftHardCoulomb;
 
 const char* kBox = R"(
 [compaction_box]

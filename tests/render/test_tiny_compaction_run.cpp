@@ -8,6 +8,7 @@
 #include "render/sample_report.h"
 #include "scenario/scenario.h"
 #include "scenes/scenario_files.h"
+#include "scenes/tiny_scenario.h"
 #include "tiny_compaction_run.h"
 
 namespace sg::test {
@@ -15,38 +16,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* kTinyBox = R"(name = "tiny-box"
+const std::string kTinyBox = R"(name = "tiny-box"
 [time]
 duration = 2.51
 [output]
 series_period = 0.05
 field_period = 0.25
-[discretization]
-node_spacing = 0.15
-[[materials]]
-name = "soft"
-young = 10.0
-poisson = 0.4
-damping = 0.01
-[[materials]]
-name = "hard"
-young = 1000.0
-[[contact_laws]]
-materials = ["soft", "soft"]
-law = "coulomb"
-normal_stiffness = 1000.0
-friction = 0.5
-[[contact_laws]]
-materials = ["soft", "hard"]
-law = "coulomb"
-normal_stiffness = 1000.0
-friction = 0.5
-[[contact_laws]]
-materials = ["hard", "hard"]
-law = "coulomb"
-normal_stiffness = 1000.0
-friction = 0.5
-[compaction_box]
+)" + std::string(scenes::kSoftHardCoulomb) +
+                             R"([compaction_box]
 width = 3.0
 grains = 8
 grain_material = "soft"

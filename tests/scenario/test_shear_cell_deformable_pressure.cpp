@@ -16,6 +16,7 @@
 #include "io/run.h"
 #include "scenario/scenario.h"
 #include "scenes/scenario_files.h"
+#include "scenes/scenario_run.h"
 #include "scenes/series_text.h"
 #include "scenes/shear_cell_scenario.h"
 #include "solver/explicit_solver.h"
@@ -187,15 +188,8 @@ TEST(DeformablePressure, TopStripCarriesThePressureAndTheLedgerCloses) {
 }
 
 RunSummary run(const fs::path& dir, int threads, long stop_after = -1, bool resume = false) {
-  scenes::write_text_file(dir / "cell.toml", cell_scenario("cell", 4.0));
-  omp_set_num_threads(threads);
-  RunOptions options;
-  options.output_root_override = dir / "out";
-  options.stop_after_steps = stop_after;
-  options.resume = resume;
-  const RunSummary summary = run_scenario(load_scenario(dir / "cell.toml"), options);
-  omp_set_num_threads(1);
-  return summary;
+  return scenes::run_scenario_text(dir, "cell.toml", cell_scenario("cell", 4.0), threads,
+                                   stop_after, resume);
 }
 
 // Through `softgrain run`'s engine (adaptive step, checkpoints): series.csv is byte-identical

@@ -25,6 +25,7 @@
 #include "io/run.h"
 #include "scenario/scenario.h"
 #include "scenes/scenario_files.h"
+#include "scenes/scenario_run.h"
 #include "scenes/series_text.h"
 #include "scenes/shear_cell_scenario.h"
 
@@ -52,12 +53,7 @@ using Series = scenes::SeriesText;
 
 Series run_cell(int threads) {
   const fs::path dir = scenes::process_temp_dir("cell_" + std::to_string(threads));
-  scenes::write_text_file(dir / "cell.toml", cell_scenario());
-  omp_set_num_threads(threads);
-  RunOptions options;
-  options.output_root_override = dir / "out";
-  run_scenario(load_scenario(dir / "cell.toml"), options);
-  omp_set_num_threads(1);
+  scenes::run_scenario_text(dir, "cell.toml", cell_scenario(), threads);
 
   Series s = scenes::read_series_text(dir / "out" / "cell" / "series.csv");
   fs::remove_all(dir);

@@ -46,6 +46,36 @@ material = "hard"
 rigid = true
 )";
 
+// Two materials (soft disc grains, hard walls and rigid grains) and Coulomb 0.5 between all
+// of them, spacing 0.15: the body of the tiny compaction-box and generate scenarios (each
+// test adds [time], [output] and its builder section).
+inline constexpr const char* kSoftHardCoulomb = R"([discretization]
+node_spacing = 0.15
+[[materials]]
+name = "soft"
+young = 10.0
+poisson = 0.4
+damping = 0.01
+[[materials]]
+name = "hard"
+young = 1000.0
+[[contact_laws]]
+materials = ["soft", "soft"]
+law = "coulomb"
+normal_stiffness = 1000.0
+friction = 0.5
+[[contact_laws]]
+materials = ["soft", "hard"]
+law = "coulomb"
+normal_stiffness = 1000.0
+friction = 0.5
+[[contact_laws]]
+materials = ["hard", "hard"]
+law = "coulomb"
+normal_stiffness = 1000.0
+friction = 0.5
+)";
+
 // Appended to kTinyScenarioBody: the scene made periodic over [-3, 3) with two more soft
 // grains that meet across the seam x = 3 (one thrown at 4 in +x) and bond.
 inline constexpr const char* kSeamGrains = R"([periodic]
