@@ -2,7 +2,10 @@
 // controller, contacts, internal forces, update): the number behind "the papers' run in
 // under a day". Cohesive soft grains (nu = 0.45, alpha = 0.01) of diameter 0.85-1.15 at node
 // spacing 0.1 (about 80 nodes per grain); the cell is compacted for one time unit before
-// the timing, so the grains are in contact. Reports node-steps per second and the step.
+// the timing, so the grains are in contact. Reports node-steps per second, the step, and the
+// share of the wall time of each phase of the step profile (solver/step_profile.h) with
+// profile_over_wall, the sum of the phases over the measured wall time (the steps' own
+// phases only: the controller's held-state copies are the rest).
 //
 //   build/bench/bench_softgrain --benchmark_filter=ShearCellStep --benchmark_repetitions=3
 //       --benchmark_report_aggregates_only=true
@@ -10,9 +13,11 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <string>
 
 #include "../tests/scenes/shear_cell_scenario.h"
 #include "scenario/scenario.h"
@@ -47,10 +52,25 @@ void ShearCellStep(benchmark::State& state) {
   StepController controller(solver, &contacts, StepControlParams{});
   while (solver.state().time < 1.0)  // the compaction stage: grains in contact
     controller.advance();
+  // The profile's phases against the wall time of the timed steps (issue: they must add up).
+  const StepProfile before = solver.profile();
+  const auto wall_start = std::chrono::steady_clock::now();
   for (auto _ : state) {
     controller.advance();
     benchmark::ClobberMemory();
   }
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  const StepProfile& after = solver.profile();
+  for (std::size_t p = 0; p < kStepPhaseCount; ++p) {
+    const double share = (after.seconds[p] - before.seconds[p]) / wall;
+    if (after.seconds[p] > before.seconds[p]) {
+      std::string name(phase_name(static_cast<StepPhase>(p)));
+      std::replace(name.begin(), name.end(), ' ', '_');
+      state.counters["share_" + name] = share;
+    }
+  }
+  state.counters["profile_over_wall"] = (after.total() - before.total()) / wall;
   const double node_steps =
       static_cast<double>(model.node_count()) * static_cast<double>(state.iterations());
   state.counters["nodes"] = static_cast<double>(model.node_count());

@@ -1,23 +1,83 @@
-// softgrain info SCENARIO: build the model and print its size, stable step and memory.
+// softgrain info SCENARIO: build the model and print its size, stable step and memory, and for
+// a damped model the step and the measured wall time per time unit of both integrators.
+#include <chrono>
+#include <iomanip>
 #include <iostream>
+#include <memory>
 
 #include "command_registry.h"
 #include "scenario/scenario.h"
+#include "solver/explicit_solver.h"
 #include "solver/mass_scaling.h"
 #include "solver/stable_time_step.h"
+#include "solver/state_snapshot.h"
 
 namespace sg::app {
 namespace {
+
+bool has_damped_deformable_body(const Model& model) {
+  for (std::size_t b = 0; b < model.bodies.size(); ++b)
+    if (model.bodies[b].kind == BodyKind::deformable &&
+        model.materials[static_cast<std::size_t>(model.bodies[b].material)].damping > 0.0)
+      return true;
+  return false;
+}
+
+// The stable step of `model` with the integrator `imex`, and the wall seconds per step measured
+// over a few steps from the initial state (restored after).
+struct IntegratorCost {
+  StableStep stable;
+  double seconds_per_step = 0.0;
+};
+IntegratorCost measure(Model& model, ContactSystem* contacts, const ScenarioDef& scenario,
+                       double contact_stiffness, bool imex) {
+  model.implicit_viscosity = imex;
+  IntegratorCost cost;
+  cost.stable = estimate_stable_time_step(model, scenario.time_step_safety, contact_stiffness);
+  ExplicitSolver solver(model, contacts);
+  StateSnapshot initial;
+  capture_state(solver, contacts, initial);
+  constexpr int kSteps = 10;
+  solver.step(cost.stable.dt);  // warm-up (first contact detection, factorizations)
+  const auto start = std::chrono::steady_clock::now();
+  for (int k = 0; k < kSteps; ++k)
+    solver.step(cost.stable.dt);
+  cost.seconds_per_step =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / kSteps;
+  restore_state(initial, solver, contacts);
+  return cost;
+}
+
+void print_integrators(Model& model, ContactSystem* contacts, const ScenarioDef& scenario,
+                       double contact_stiffness) {
+  const bool configured = model.implicit_viscosity;
+  std::cout << "  integrators (measured over 10 steps from the initial state):\n";
+  for (const bool imex : {false, true}) {
+    const IntegratorCost c = measure(model, contacts, scenario, contact_stiffness, imex);
+    const double steps_per_unit = 1.0 / c.stable.dt;
+    std::cout << "    " << std::left << std::setw(9) << (imex ? "imex" : "explicit") << std::right
+              << " dt " << std::setprecision(3) << c.stable.dt << " ("
+              << (c.stable.damping_limited ? "damping-limited" : "wave-speed-limited") << "), "
+              << 1e3 * c.seconds_per_step << " ms/step, " << c.seconds_per_step * steps_per_unit
+              << " s per time unit, "
+              << c.seconds_per_step * steps_per_unit * scenario.duration / 3600.0 << " h for "
+              << scenario.duration << " time units" << (imex == configured ? "  <- [time]" : "")
+              << "\n";
+  }
+  model.implicit_viscosity = configured;
+}
 
 int info(const std::string& file) {
   const ScenarioDef scenario = load_scenario(file);
   Model model = build_model(scenario);
   // The same estimate as `run` makes: with the contact penalty and after mass scaling.
+  std::unique_ptr<ContactSystem> contacts;
   double contact_stiffness = 0.0;
-  if (!scenario.contact_laws.empty())
-    contact_stiffness =
-        ContactSystem(model, contact_law_table(scenario), contact_settings(scenario))
-            .max_stiffness();
+  if (!scenario.contact_laws.empty()) {
+    contacts = std::make_unique<ContactSystem>(model, contact_law_table(scenario),
+                                               contact_settings(scenario));
+    contact_stiffness = contacts->max_stiffness();
+  }
   std::string mass_scaling;
   if (scenario.mass_scaling_step > 0.0)
     mass_scaling = describe(apply_mass_scaling(model, scenario.mass_scaling_step,
@@ -39,11 +99,14 @@ int info(const std::string& file) {
   if (stable.limiting_body >= 0)
     std::cout << "  stable step:   " << stable.dt << " ("
               << (stable.damping_limited ? "damping-limited" : "wave-speed-limited") << ", body '"
-              << model.bodies[static_cast<std::size_t>(stable.limiting_body)].name << "')\n"
+              << model.bodies[static_cast<std::size_t>(stable.limiting_body)].name << "'; "
+              << (model.implicit_viscosity ? "imex" : "explicit") << " integrator)\n"
               << "  steps:         " << static_cast<long>(scenario.duration / stable.dt) << " for "
               << scenario.duration << " time units\n";
   if (!mass_scaling.empty()) std::cout << "  " << mass_scaling << "\n";
   std::cout << "  memory:        " << bytes / 1048576.0 << " MiB (node state and shape rows)\n";
+  if (stable.limiting_body >= 0 && has_damped_deformable_body(model))
+    print_integrators(model, contacts.get(), scenario, contact_stiffness);
   return 0;
 }
 
@@ -51,8 +114,8 @@ const Registration registration(
     {"info",
      [](CLI::App& app, const GlobalOptions& options) {
        auto file = std::make_shared<std::string>();
-       CLI::App* sub =
-           app.add_subcommand("info", "Build the model and print its size and stable step");
+       CLI::App* sub = app.add_subcommand(
+           "info", "Build the model and print its size, stable step and cost per time unit");
        sub->add_option("scenario", *file, "scenario TOML file")->required();
        return std::function<int()>([file, &options] {
          apply_threads(options);

@@ -2,7 +2,7 @@
 #include <iostream>
 
 #include "command_registry.h"
-#include "io/run.h"
+#include "run/run.h"
 
 namespace sg::app {
 namespace {
@@ -11,6 +11,7 @@ struct RunArguments {
   std::string scenario;
   std::string output;
   bool resume = false;
+  bool profile = false;
 };
 
 const Registration registration(
@@ -24,6 +25,9 @@ const Registration registration(
                        "output root folder (overrides [output] directory)");
        run->add_flag("--resume", args->resume,
                      "continue a stopped run from <run folder>/checkpoint.bin (same scenario)");
+       run->add_flag("--profile", args->profile,
+                     "show the share of each phase of the step (contacts, internal forces, ...) "
+                     "with the progress line; run.log always ends with the profile");
        return std::function<int()>([args, &options] {
          apply_threads(options);
          const ScenarioDef scenario = load_scenario(args->scenario);
@@ -31,6 +35,7 @@ const Registration registration(
          run_options.progress = &std::cerr;
          run_options.output_root_override = args->output;
          run_options.resume = args->resume;
+         run_options.profile = args->profile;
          const RunSummary summary = run_scenario(scenario, run_options);
          std::cout << "run '" << scenario.name << "': " << summary.steps << " steps";
          if (summary.resumed_from_step >= 0)

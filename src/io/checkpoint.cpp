@@ -314,6 +314,8 @@ CheckpointFingerprint fingerprint_of(const Model& model, std::span<const double>
     w(m.poisson);
     w(m.density);
     w(m.damping);
+    // Non-default damping models only, so that the fingerprints of earlier runs are unchanged.
+    if (m.damping_model != DampingModel::objective) w(m.damping_model);
   }
   w(model.nodes.ref_y);
   w(model.nodes.mass);

@@ -6,6 +6,18 @@
 
 namespace sg {
 
+const char* to_string(DampingModel model) {
+  switch (model) {
+    case DampingModel::objective:
+      return "objective";
+    case DampingModel::corotational:
+      return "corotational";
+    case DampingModel::reference_stiffness:
+      return "reference_stiffness";
+  }
+  return "?";
+}
+
 const char* to_string(MaterialLaw law) {
   switch (law) {
     case MaterialLaw::neo_hookean:
@@ -38,6 +50,7 @@ MaterialParams make_material_params(const MaterialDef& def) {
   m.mu = e / (2.0 * (1.0 + nu));
   m.density = def.density;
   m.damping = def.damping;
+  m.damping_model = def.damping_model;
   return m;
 }
 
@@ -72,6 +85,33 @@ ElasticResponse elastic_response(const MaterialParams& m, const Mat2& f) {
 
 Mat2 viscous_second_piola(const MaterialParams& m, const Mat2& strain_rate) {
   return m.damping * (m.lambda * strain_rate.trace() * Mat2::Identity() + 2.0 * m.mu * strain_rate);
+}
+
+ViscousResponse viscous_response(const MaterialParams& m, const Mat2& f, const Mat2& f_rate,
+                                 const Mat2& rotation) {
+  switch (m.damping_model) {
+    case DampingModel::objective: {
+      // Green-Lagrange strain rate E_dot = sym(F^T F_dot): zero for any rigid motion.
+      const Mat2 ft_fdot = f.transpose() * f_rate;
+      const Mat2 strain_rate = 0.5 * (ft_fdot + ft_fdot.transpose());
+      const Mat2 s_viscous = viscous_second_piola(m, strain_rate);
+      return {f * s_viscous, (s_viscous.array() * strain_rate.array()).sum()};
+    }
+    case DampingModel::corotational: {
+      // The small-strain rate in the body's rotated frame: zero for a rigid motion of the body.
+      const Mat2 rt_fdot = rotation.transpose() * f_rate;
+      const Mat2 strain_rate = 0.5 * (rt_fdot + rt_fdot.transpose());
+      const Mat2 s_viscous = viscous_second_piola(m, strain_rate);
+      return {rotation * s_viscous, (s_viscous.array() * strain_rate.array()).sum()};
+    }
+    case DampingModel::reference_stiffness: {
+      // sigma_v = alpha C0 : sym(grad v): the force is alpha K0 v (K0 = sum w B^T C0 B).
+      const Mat2 strain_rate = 0.5 * (f_rate + f_rate.transpose());
+      const Mat2 p_viscous = viscous_second_piola(m, strain_rate);
+      return {p_viscous, (p_viscous.array() * strain_rate.array()).sum()};
+    }
+  }
+  SG_THROW("unknown damping model");
 }
 
 CauchyStress cauchy_stress(const MaterialParams& m, const Mat2& f) {

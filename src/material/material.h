@@ -18,6 +18,26 @@ enum class MaterialLaw {
 
 const char* to_string(MaterialLaw law);
 
+// The form of the stiffness-proportional (Kelvin-Voigt) damping, f_v = -C v with C ~ alpha K
+// (docs/method.md "Damping models"). All three coincide at small strain and small rotation.
+enum class DampingModel {
+  // S_v = alpha C0 : E_dot, E_dot = sym(F^T F_dot), P_v = F S_v: objective, a rigid motion of
+  // any size is never damped (default).
+  objective,
+  // P_v = R (alpha C0 : sym(R^T F_dot)), R the body's mean rotation (model/kinematics.h
+  // BodyRotation): C = R (alpha K0) R^T, exact for rigid motions, first-order different from
+  // the objective form at finite strain; its operator is constant in the rotated frame, which
+  // the IMEX integrator exploits (one stored factorization per body).
+  corotational,
+  // P_v = alpha C0 : sym(F_dot): f_v = -alpha K0 v with K0 the small-strain stiffness of the
+  // reference configuration, never rotated, as the reference code MELODY 2D and the papers'
+  // results (paper 001 §2.1). A grain turned by theta and spinning at omega sees a strain rate
+  // of order omega sin(theta) and is braked through its bulk modulus. For reproduction.
+  reference_stiffness,
+};
+
+const char* to_string(DampingModel model);
+
 struct MaterialDef {
   std::string name;
   MaterialLaw law = MaterialLaw::neo_hookean;
@@ -25,6 +45,7 @@ struct MaterialDef {
   double poisson = 0.3;  // nu, in (-1, 0.5)
   double density = 1.0;  // rho (mass per unit area in 2D)
   double damping = 0.0;  // alpha, stiffness-proportional Rayleigh coefficient (time units)
+  DampingModel damping_model = DampingModel::objective;
 };
 
 // Throws sg::Error naming the material and the bad value.
@@ -37,6 +58,7 @@ struct MaterialParams {
   double mu = 0.0;      // shear modulus
   double density = 1.0;
   double damping = 0.0;  // alpha
+  DampingModel damping_model = DampingModel::objective;
 };
 
 MaterialParams make_material_params(const MaterialDef& def);
@@ -64,6 +86,17 @@ ElasticResponse elastic_response(const MaterialParams& m, const Mat2& f);
 // Unlike alpha K0 v it is objective: a rigid rotation has E_dot = 0 and is never damped.
 // The dissipated power density is S_v : E_dot >= 0.
 Mat2 viscous_second_piola(const MaterialParams& m, const Mat2& strain_rate);
+
+// The viscous first Piola-Kirchhoff stress of the material's damping model at deformation F
+// and rate F_dot, and the dissipated power density (>= 0): S_v : E_dot for the objective and
+// corotational forms, P_v : sym(F_dot) for the reference-stiffness one. `rotation` is the
+// body's mean rotation R (used by the corotational form only).
+struct ViscousResponse {
+  Mat2 first_piola;
+  double power_density;
+};
+ViscousResponse viscous_response(const MaterialParams& m, const Mat2& f, const Mat2& f_rate,
+                                 const Mat2& rotation);
 
 // Full plane-strain Cauchy stress, in-plane components and the out-of-plane sigma_zz.
 struct CauchyStress {

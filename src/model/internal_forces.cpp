@@ -8,6 +8,21 @@
 
 namespace sg {
 
+Mat2 body_mean_rotation(const Model& model, const Body& body, const double* ux, const double* uy) {
+  // As model/kinematics.h body_rotation, from the given displacement parameters.
+  double a = 2.0, b = 0.0;
+  for (int i = 0; i < body.node_count(); ++i) {
+    const auto j = static_cast<std::size_t>(body.node_begin + i);
+    const double cx = model.mean_gradient_x[j], cy = model.mean_gradient_y[j];
+    a += ux[i] * cx + uy[i] * cy;  // F11 + F22 - 2
+    b += uy[i] * cx - ux[i] * cy;  // F21 - F12
+  }
+  const double r = std::sqrt(a * a + b * b);
+  Mat2 q;
+  q << a / r, -b / r, b / r, a / r;
+  return q;
+}
+
 BodyForceResult add_body_internal_forces(const Model& model, BodyId body_id, const double* ux,
                                          const double* uy, const double* vx, const double* vy,
                                          double* fx, double* fy, bool with_damping,
@@ -21,6 +36,10 @@ BodyForceResult add_body_internal_forces(const Model& model, BodyId body_id, con
   const double* dndx = rows.dndx.data();
   const double* dndy = rows.dndy.data();
 
+  // The corotational damping model turns its strain rate with the body's mean rotation at u.
+  const Mat2 rotation = damped && material.damping_model == DampingModel::corotational
+                            ? body_mean_rotation(model, body, ux, uy)
+                            : Mat2::Identity();
   BodyForceResult result;
   const bool split_viscous = damped && viscous_fx != nullptr;
   if (viscous_fx) std::fill(viscous_fx, viscous_fx + body.node_count(), 0.0);
@@ -70,13 +89,10 @@ BodyForceResult add_body_internal_forces(const Model& model, BodyId body_id, con
     if (damped) {
       Mat2 f_rate;
       f_rate << r00, r01, r10, r11;
-      // Green-Lagrange strain rate E_dot = sym(F^T F_dot): zero for any rigid motion.
-      const Mat2 ft_fdot = f.transpose() * f_rate;
-      const Mat2 strain_rate = 0.5 * (ft_fdot + ft_fdot.transpose());
-      const Mat2 s_viscous = viscous_second_piola(material, strain_rate);
-      p_viscous = f * s_viscous;
+      const ViscousResponse viscous = viscous_response(material, f, f_rate, rotation);
+      p_viscous = viscous.first_piola;
       p += p_viscous;
-      result.damping_power += w * (s_viscous.array() * strain_rate.array()).sum();
+      result.damping_power += w * viscous.power_density;
     }
     // f_J -= w P grad0 N_J (and the viscous part apart, for the energy ledger).
     const double p00 = w * p(0, 0), p01 = w * p(0, 1), p10 = w * p(1, 0), p11 = w * p(1, 1);
@@ -101,6 +117,59 @@ BodyForceResult add_body_internal_forces(const Model& model, BodyId body_id, con
     }
   }
   return result;
+}
+
+void body_deformation_gradients(const Model& model, BodyId body_id, const double* ux,
+                                const double* uy, std::vector<Mat2>& gradients) {
+  const Body& body = model.bodies[static_cast<std::size_t>(body_id)];
+  const ShapeRows& rows = model.gauss_rows;
+  gradients.resize(static_cast<std::size_t>(body.gauss_end - body.gauss_begin));
+  for (int g = body.gauss_begin; g < body.gauss_end; ++g) {
+    double h00 = 0, h01 = 0, h10 = 0, h11 = 0;
+    for (auto k = rows.offset[g]; k < rows.offset[g + 1]; ++k) {
+      const auto j = rows.node[k];
+      const double gx = rows.dndx[k], gy = rows.dndy[k];
+      h00 += ux[j] * gx;
+      h01 += ux[j] * gy;
+      h10 += uy[j] * gx;
+      h11 += uy[j] * gy;
+    }
+    Mat2& f = gradients[static_cast<std::size_t>(g - body.gauss_begin)];
+    f << 1.0 + h00, h01, h10, 1.0 + h11;
+  }
+}
+
+void apply_viscous_operator(const Model& model, BodyId body_id, const std::vector<Mat2>& gradients,
+                            const Mat2& rotation, const double* x, const double* y, double* out_x,
+                            double* out_y) {
+  const Body& body = model.bodies[static_cast<std::size_t>(body_id)];
+  const MaterialParams& material = model.materials[static_cast<std::size_t>(body.material)];
+  const ShapeRows& rows = model.gauss_rows;
+  std::fill(out_x, out_x + body.node_count(), 0.0);
+  std::fill(out_y, out_y + body.node_count(), 0.0);
+  for (int g = body.gauss_begin; g < body.gauss_end; ++g) {
+    const auto begin = rows.offset[g], end = rows.offset[g + 1];
+    double r00 = 0, r01 = 0, r10 = 0, r11 = 0;
+    for (auto k = begin; k < end; ++k) {
+      const auto j = rows.node[k];
+      const double gx = rows.dndx[k], gy = rows.dndy[k];
+      r00 += x[j] * gx;
+      r01 += x[j] * gy;
+      r10 += y[j] * gx;
+      r11 += y[j] * gy;
+    }
+    Mat2 f_rate;
+    f_rate << r00, r01, r10, r11;
+    const Mat2& f = gradients[static_cast<std::size_t>(g - body.gauss_begin)];
+    const Mat2 p = model.gauss_weight[static_cast<std::size_t>(g)] *
+                   viscous_response(material, f, f_rate, rotation).first_piola;
+    for (auto k = begin; k < end; ++k) {
+      const auto j = rows.node[k];
+      const double gx = rows.dndx[k], gy = rows.dndy[k];
+      out_x[j] += p(0, 0) * gx + p(0, 1) * gy;
+      out_y[j] += p(1, 0) * gx + p(1, 1) * gy;
+    }
+  }
 }
 
 InternalForceResult add_internal_forces(Model& model) {

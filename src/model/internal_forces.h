@@ -5,6 +5,8 @@
 //   P   = P_el(F) + F S_v,  S_v = alpha C0 : sym(F^T F')
 //   f_J -= w_gp P grad0 N_J
 // The kernel streams through the precomputed rows; no allocation, no branches on strings.
+#include <vector>
+
 #include "model/model.h"
 
 namespace sg {
@@ -26,6 +28,24 @@ BodyForceResult add_body_internal_forces(const Model& model, BodyId body, const 
                                          double* fx, double* fy, bool with_damping = true,
                                          double* viscous_fx = nullptr,
                                          double* viscous_fy = nullptr);
+
+// The polar rotation of the body's mean deformation gradient at displacement parameters
+// ux, uy (local numbering), as model/kinematics.h body_rotation: the corotational damping
+// model's R.
+Mat2 body_mean_rotation(const Model& model, const Body& body, const double* ux, const double* uy);
+
+// The viscous operator of a deformable body at a fixed deformation: out = C x, where the
+// viscous force of the body under the velocity parameters x is f_v = -C x (C symmetric
+// positive semi-definite, linear in x at fixed F). `gradients` are the body's deformation
+// gradients at its Gauss points (body_deformation_gradients), `rotation` its mean rotation
+// (corotational damping model). Arrays in the body's local numbering; out is overwritten.
+// This is the viscous part of add_body_internal_forces applied to an arbitrary vector: the
+// IMEX integrator's matrix-free operator (solver/implicit_viscosity.h).
+void body_deformation_gradients(const Model& model, BodyId body, const double* ux, const double* uy,
+                                std::vector<Mat2>& gradients);
+void apply_viscous_operator(const Model& model, BodyId body, const std::vector<Mat2>& gradients,
+                            const Mat2& rotation, const double* x, const double* y, double* out_x,
+                            double* out_y);
 
 struct InternalForceResult {
   double elastic_energy = 0.0;

@@ -171,6 +171,12 @@ struct Model {
   std::vector<double> mean_gradient_x, mean_gradient_y;
   RigidState rigid;
   std::vector<NodeDrive> node_drives;
+  // The time integrator's treatment of the bulk damping ([time] integrator): explicit, or
+  // implicit per damped deformable body (IMEX, solver/implicit_viscosity.h), with the relative
+  // tolerance of its iterative solves. Read by the solver and by the stable step estimate
+  // (an implicit viscosity does not limit the step).
+  bool implicit_viscosity = false;
+  double implicit_viscosity_tolerance = 1e-9;
   Vec2 gravity = Vec2::Zero();  // acceleration (length / time^2)
   // Periodic boundary in x over [x_min, x_max) when periodic_x is set.
   bool periodic_x = false;

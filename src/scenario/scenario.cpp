@@ -13,7 +13,7 @@ namespace sg {
 namespace {
 
 MaterialDef read_material(const TomlReader& t) {
-  t.reject_unknown_keys({"name", "law", "young", "poisson", "density", "damping"});
+  t.reject_unknown_keys({"name", "law", "young", "poisson", "density", "damping", "damping_model"});
   MaterialDef m;
   m.name = t.string("name");
   const std::string law = t.one_of("law", {"neo_hookean", "saint_venant_kirchhoff"}, "neo_hookean");
@@ -24,6 +24,11 @@ MaterialDef read_material(const TomlReader& t) {
     t.fail("poisson", "expected a number in (-1, 0.5), got " + std::to_string(m.poisson));
   m.density = t.positive("density", 1.0);
   m.damping = t.non_negative("damping", 0.0);
+  const std::string damping_model =
+      t.one_of("damping_model", {"objective", "corotational", "reference_stiffness"}, "objective");
+  m.damping_model = damping_model == "objective"      ? DampingModel::objective
+                    : damping_model == "corotational" ? DampingModel::corotational
+                                                      : DampingModel::reference_stiffness;
   return m;
 }
 
@@ -145,7 +150,7 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
   s.name = root.string("name", file.stem().string());
   if (auto t = root.table("time")) {
     t->reject_unknown_keys({"duration", "safety", "fixed_step", "reestimate_interval",
-                            "step_tolerance", "mass_scaling_step"});
+                            "step_tolerance", "mass_scaling_step", "integrator", "imex_tolerance"});
     s.duration = t->positive("duration");
     s.time_step_safety = t->positive("safety", 0.8);
     if (s.time_step_safety > 1.0) t->fail("safety", "expected a number in (0, 1]");
@@ -155,6 +160,9 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
       t->fail("reestimate_interval", "expected a number of steps >= 0 (0: never)");
     s.step_tolerance = t->non_negative("step_tolerance", s.step_tolerance);
     s.mass_scaling_step = t->non_negative("mass_scaling_step", 0.0);
+    s.implicit_viscosity = t->one_of("integrator", {"explicit", "imex"}, "explicit") == "imex";
+    s.imex_tolerance = t->positive("imex_tolerance", s.imex_tolerance);
+    if (s.imex_tolerance >= 1.0) t->fail("imex_tolerance", "expected a number in (0, 1)");
   } else {
     root.fail("time", "required table [time] with 'duration' is missing");
   }
@@ -348,6 +356,8 @@ ContactSettings contact_settings(const ScenarioDef& scenario) {
 Model build_model(const ScenarioDef& scenario) {
   Model model;
   model.gravity = scenario.gravity;
+  model.implicit_viscosity = scenario.implicit_viscosity;
+  model.implicit_viscosity_tolerance = scenario.imex_tolerance;
   for (const MaterialDef& m : scenario.materials)
     model.add_material(m);
   auto material_id = [&](const std::string& name) {

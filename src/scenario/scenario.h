@@ -56,6 +56,10 @@ struct ScenarioDef {
   long reestimate_interval = 2000;  // accepted steps between critical-step estimates
   double step_tolerance = 0.0;      // |energy residual change| per step / energy scale; 0: off
   double mass_scaling_step = 0.0;   // > 0: scale masses so that the step reaches this (time)
+  // integrator = "imex": the bulk damping of damped deformable bodies implicit in the velocity
+  // (solver/implicit_viscosity.h), the step no longer limited by it; "explicit" (default).
+  bool implicit_viscosity = false;
+  double imex_tolerance = 1e-9;  // relative residual of the objective model's iterative solves
   // [output]
   std::filesystem::path output_root = "out";
   double series_period = 0.0;  // time between rows of series.csv (0: 1/200 of duration)

@@ -1,6 +1,6 @@
 #pragma once
 // Explicit central-difference (leapfrog) time stepping of a Model with a step that may change
-// from one step to the next (DESIGN.md §2 "Time integration"; Belytschko, Liu & Moran,
+// from one step to the next (docs/method.md "Time integration"; Belytschko, Liu & Moran,
 // "Nonlinear Finite Elements for Continua and Structures", §6.2, box 6.1). With dt_- = t_n -
 // t_n-1 the step that ended at t_n and dt_+ = t_n+1 - t_n the step about to be taken:
 //
@@ -48,11 +48,15 @@
 // reaction is F - c v_n+1/2, so instead of R . v the ledger books the work of the load F as
 // external work and that of -c v as servo dissipation, split over two steps as for a
 // servo-loaded rigid degree of freedom; the two agree because the nodes share one velocity.
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "contact/contact_system.h"
+#include "model/internal_forces.h"
 #include "model/model.h"
+#include "solver/implicit_viscosity.h"
+#include "solver/step_profile.h"
 
 namespace sg {
 
@@ -82,6 +86,17 @@ struct EnergyLedger {
   double residual() const;
 };
 
+// Work and dissipation over the last step [t_n, t_n+1], booked at the next step so that the
+// ledger always describes one instant (see above): part of the state although private to the
+// solver (checkpointed, restored with a rejected step: solver/state_snapshot.h).
+struct SolverPendingIncrements {
+  double external_work = 0.0;
+  double damping_dissipation = 0.0;
+  double load_work = 0.0;  // servo-loaded degrees of freedom, rigid or node carriers
+  double servo_dissipation = 0.0;
+  double drive_work = 0.0;  // reactions of driven field nodes (NodeDrive)
+};
+
 struct SolverState {
   double time = 0.0;  // time of the current displacements (the ledger is one step behind)
   long step = 0;
@@ -94,9 +109,12 @@ struct SolverState {
 
 class ExplicitSolver {
  public:
-  // `contacts` may be null (free grains).
-  explicit ExplicitSolver(Model& model, ContactSystem* contacts = nullptr)
-      : model_(model), contacts_(contacts) {}
+  // `contacts` may be null (free grains). With Model::implicit_viscosity the damped deformable
+  // bodies' viscous forces are implicit (IMEX, solver/implicit_viscosity.h).
+  explicit ExplicitSolver(Model& model, ContactSystem* contacts = nullptr);
+  ~ExplicitSolver();
+  ExplicitSolver(const ExplicitSolver&) = delete;
+  ExplicitSolver& operator=(const ExplicitSolver&) = delete;
 
   // Advances one step of size dt. Throws sg::Error with the body, node and step when the
   // state becomes invalid (inverted Gauss point, non-finite velocity).
@@ -105,52 +123,94 @@ class ExplicitSolver {
   const SolverState& state() const { return state_; }
   SolverState& state() { return state_; }
   Model& model() { return model_; }
+  // Wall time per phase of the steps taken so far (timing only, see step_profile.h); the run
+  // loop books its own phases (step control, outputs) into the same profile.
+  const StepProfile& profile() const { return profile_; }
+  StepProfile& profile() { return profile_; }
+  // The IMEX solves so far (all zero for the explicit integrator).
+  ViscousSolveStatistics viscous_statistics() const;
 
  private:
   Model& model_;
   ContactSystem* contacts_;
   SolverState state_;
-  // Checkpoints and retried steps save and restore the pending increments below with the
-  // rest of the state (solver/state_snapshot.cpp): every member that is not scratch.
+  SolverPendingIncrements pending_;
+  StepProfile profile_;
+  std::unique_ptr<ImplicitViscosity> implicit_;  // IMEX: the per-body viscous systems
+  // Checkpoints and retried steps save and restore pending_ with the rest of the state
+  // (solver/state_snapshot.cpp): every member that is not scratch or timing.
   friend struct SolverSnapshotAccess;
-  // Work and dissipation over the last step [t_n, t_n+1], booked at the next step so the
-  // ledger always describes one instant.
-  double pending_external_work_ = 0.0;
-  double pending_damping_dissipation_ = 0.0;
-  // The same for servo-loaded degrees of freedom, rigid or node carriers (their imposed force
-  // and viscous force).
-  double pending_load_work_ = 0.0;
-  double pending_servo_dissipation_ = 0.0;
-  // The same for the reactions of driven field nodes (NodeDrive: the back faces of deformable
-  // strips).
-  double pending_drive_work_ = 0.0;
-  // Scratch: per-body partial sums of the update, then per node drive its imposed velocities
-  // and partial sums (see step()).
-  std::vector<double> body_sums_;
-  void check_finite_velocities() const;
+
+  // The two steps around t_n (see the header).
+  struct StepSizes {
+    double previous;  // dt_- = t_n - t_n-1 (dt_+ at the first step)
+    double next;      // dt_+ = t_n+1 - t_n
+    double velocity;  // h_n = (dt_- + dt_+) / 2, the interval between v_n-1/2 and v_n+1/2
+  };
   // Power of the servo loads (DriveMode::load) at the force evaluation: F_n . v and
   // (c v_n+1/2) . v with v = v_n-1/2 (old) and v = v_n+1/2 (new), summed over rigid degrees
   // of freedom and node-drive carriers.
   struct ServoPower {
     double load_old = 0.0, load_new = 0.0, servo_old = 0.0, servo_new = 0.0;
   };
-  // The velocities v_n+1/2 of the node drives' carriers (mode load), advanced over
-  // h = (dt_prev + dt) / 2, written to the drive's imposed-velocity slots of `drive_data`
-  // (6 per drive, see step()); their servo power.
-  ServoPower advance_node_carriers(double h, double* drive_data) const;
-  // What advance_rigid_bodies adds to the nodes' sums in step().
+  // What the velocity update of the field nodes measured, summed over bodies in body order.
+  struct NodeUpdate {
+    double kinetic = 0.0;         // time-centred, 1/2 m v_n-1/2 v_n+1/2
+    double external_power = 0.0;  // of gravity, along v_n+1/2
+    double viscous_power = 0.0;   // f_v,n . v_n+1/2
+    double force_power = 0.0;     // F_n . v_n+1/2, F_n the total force of the update
+    double force_square = 0.0;    // F_n . F_n / m
+    ServoPower carriers;          // of the node drives' load-driven carriers
+    double drive_work_old = 0.0;  // R_n . v_n-1/2 of velocity-driven node components
+    double drive_work_new = 0.0;  // R_n . v_n+1/2
+    // IMEX: -(F* - F_n) . v_n-1/2, the change of the damping power at the force evaluation
+    // when the viscous force becomes f_v* (implicit_viscosity.h); 0 otherwise.
+    double damping_correction = 0.0;
+  };
+  // What advance_rigid_bodies adds to the nodes' sums.
   struct RigidUpdate {
     double kinetic = 0.0;         // time-centred, 1/2 m v_n-1/2 v_n+1/2
     double external_power = 0.0;  // of gravity, constant forces and velocity drives
     double force_power = 0.0;     // F_n . v_n+1/2, F_n the total force of the update
     double force_square = 0.0;    // F_n . F_n / m
+    // Of every servo-loaded degree of freedom: the node carriers' (summed first) and then the
+    // rigid ones' in body order.
+    ServoPower servo;
   };
-  // Advances rigid bodies over the step dt that follows one of dt_prev. Books the load work
-  // and servo dissipation of DriveMode::load degrees of freedom in the ledger itself (they
-  // are split over two steps), those of the rigid bodies added to `servo` (the node
-  // carriers' part).
-  RigidUpdate advance_rigid_bodies(double dt, double dt_prev, ServoPower servo);
+
+  // The phases of step(), in order (solver/explicit_solver.cpp).
+  StepSizes step_sizes(double dt) const;
+  void apply_external_forces();
+  ContactStepResult compute_contact_forces();
+  InternalForceResult compute_internal_forces();
+  NodeUpdate update_node_velocities(const StepSizes& steps);  // solver/node_update.cpp
+  // From the node carriers' servo power (summed on, so the sums keep their order).
+  RigidUpdate advance_rigid_bodies(const StepSizes& steps,
+                                   const ServoPower& carriers);  // solver/rigid_update.cpp
+  void update_node_positions(double dt);                         // solver/node_update.cpp
+  void book_energy(const StepSizes& steps, const ContactStepResult& contact,
+                   const InternalForceResult& internal, const NodeUpdate& nodes,
+                   const RigidUpdate& rigid);
+  void finish_step(double dt);
+
+  // Helpers of the phases.
+  // The velocities v_n+1/2 of the node drives' carriers (mode load), advanced over h, written
+  // to the drive's imposed-velocity slots of `drive_data` (6 per drive, node_update.cpp);
+  // their servo power.
+  ServoPower advance_node_carriers(double h, double* drive_data) const;
+  // Books the load work and servo dissipation of every DriveMode::load degree of freedom,
+  // split over two steps.
+  void book_servo_loads(const StepSizes& steps, const ServoPower& power);
   void wrap_periodic_bodies();
+  void check_finite_velocities() const;
+
+  // Scratch of update_node_velocities: per-body partial sums, then per node drive its imposed
+  // velocities and partial sums.
+  std::vector<double> body_sums_;
+  // Scratch of update_node_velocities: IMEX velocity increments per node.
+  std::vector<double> increment_x_, increment_y_;
+  // Scratch of update_node_positions: per-body finite probes.
+  std::vector<double> body_probes_;
 };
 
 }  // namespace sg

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/parallel.h"
 #include "model/internal_forces.h"
+#include "solver/implicit_viscosity.h"
 
 namespace sg {
 
@@ -238,6 +239,9 @@ std::vector<double> estimate_body_frequencies(const Model& model, double contact
 
 double body_damping(const Model& model, BodyId body_id) {
   const Body& body = model.bodies[static_cast<std::size_t>(body_id)];
+  // An implicit viscosity (IMEX) is stable at any alpha for omega dt <= 2
+  // (solver/implicit_viscosity.h): it does not limit the step.
+  if (model.implicit_viscosity && has_implicit_viscosity(model, body_id)) return 0.0;
   return body.kind == BodyKind::deformable
              ? model.materials[static_cast<std::size_t>(body.material)].damping
              : 0.0;

@@ -32,7 +32,8 @@ double wave_speed_frequency_bound(const Model& model, BodyId body);
 // parallel over bodies.
 std::vector<double> estimate_body_frequencies(const Model& model, double contact_stiffness);
 
-// The stiffness-proportional damping coefficient alpha of a body (0 for rigid bodies).
+// The stiffness-proportional damping coefficient alpha that limits a body's explicit step: 0
+// for rigid bodies and for bodies whose viscosity the IMEX integrator treats implicitly.
 double body_damping(const Model& model, BodyId body);
 
 struct StableStep {

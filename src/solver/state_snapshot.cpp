@@ -9,22 +9,8 @@ namespace sg {
 // the next belongs here too.
 struct SolverSnapshotAccess {
   static const Model& model(const ExplicitSolver& s) { return s.model_; }
-  static SolverPendingIncrements pending(const ExplicitSolver& s) {
-    SolverPendingIncrements p;
-    p.external_work = s.pending_external_work_;
-    p.damping_dissipation = s.pending_damping_dissipation_;
-    p.load_work = s.pending_load_work_;
-    p.servo_dissipation = s.pending_servo_dissipation_;
-    p.drive_work = s.pending_drive_work_;
-    return p;
-  }
-  static void set_pending(ExplicitSolver& s, const SolverPendingIncrements& p) {
-    s.pending_external_work_ = p.external_work;
-    s.pending_damping_dissipation_ = p.damping_dissipation;
-    s.pending_load_work_ = p.load_work;
-    s.pending_servo_dissipation_ = p.servo_dissipation;
-    s.pending_drive_work_ = p.drive_work;
-  }
+  static SolverPendingIncrements pending(const ExplicitSolver& s) { return s.pending_; }
+  static void set_pending(ExplicitSolver& s, const SolverPendingIncrements& p) { s.pending_ = p; }
 };
 
 void capture_state(const ExplicitSolver& solver, const ContactSystem* contacts,

@@ -29,16 +29,6 @@
 
 namespace sg {
 
-// Work and dissipation of the last step, booked in the ledger at the next one (see
-// ExplicitSolver::step): part of the state although private to the solver.
-struct SolverPendingIncrements {
-  double external_work = 0.0;
-  double damping_dissipation = 0.0;
-  double load_work = 0.0;  // servo-loaded rigid DOFs (DriveMode::load)
-  double servo_dissipation = 0.0;
-  double drive_work = 0.0;  // reactions of driven field nodes (NodeDrive)
-};
-
 struct StateSnapshot {
   // Field nodes, one entry per node.
   std::vector<double> ref_x, ux, uy, vx, vy;

@@ -15,7 +15,7 @@
 
 #include "core/error.h"
 #include "io/checkpoint.h"
-#include "io/run.h"
+#include "run/run.h"
 #include "scenario/scenario.h"
 #include "scenes/scenario_files.h"
 #include "scenes/shear_cell_scenario.h"

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "geometry/vec2.h"
-#include "io/run.h"
+#include "run/run.h"
 #include "scenario/scenario.h"
 #include "scenes/scenario_files.h"
 #include "scenes/tiny_scenario.h"

@@ -4,8 +4,8 @@
 #include <string>
 #include <system_error>
 
-#include "io/run.h"
 #include "render/sample_report.h"
+#include "run/run.h"
 #include "scenario/scenario.h"
 #include "scenes/scenario_files.h"
 #include "scenes/tiny_scenario.h"

@@ -2,7 +2,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "io/run.h"
+#include "run/run.h"
 #include "scenario/scenario.h"
 #include "scenes/scenario_files.h"
 #include "scenes/shear_cell_scenario.h"

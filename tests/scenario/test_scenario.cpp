@@ -7,8 +7,8 @@
 #include <string>
 
 #include "core/error.h"
-#include "io/run.h"
 #include "model/model.h"
+#include "run/run.h"
 #include "scenario/scenario.h"
 #include "scenes/scenario_files.h"
 #include "scenes/tiny_scenario.h"

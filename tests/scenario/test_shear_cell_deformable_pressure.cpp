@@ -13,7 +13,7 @@
 #include <sstream>
 #include <string>
 
-#include "io/run.h"
+#include "run/run.h"
 #include "scenario/scenario.h"
 #include "scenes/scenario_files.h"
 #include "scenes/scenario_run.h"

@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "io/run.h"
+#include "run/run.h"
 #include "scenario/scenario.h"
 #include "scenes/scenario_files.h"
 #include "scenes/scenario_run.h"

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-#include "io/run.h"
+#include "run/run.h"
 #include "scenes/scenario_files.h"
 
 namespace sg::scenes {

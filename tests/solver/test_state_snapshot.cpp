@@ -206,8 +206,12 @@ TEST(StateSnapshot, SolverMembersAreTheOnesTheSnapshotKnows) {
   // test: if the member carries state from one step to the next, add it to
   // SolverSnapshotAccess and SolverPendingIncrements (and to io/checkpoint.cpp), then update
   // the expected layout here.
+  // Not state: the profile (timing), the IMEX systems (factors are a function of the model and
+  // the step, rebuilt on demand, bitwise the same), and three scratch vectors.
   const std::size_t known = sizeof(Model*) + sizeof(ContactSystem*) + sizeof(SolverState) +
-                            sizeof(SolverPendingIncrements) + sizeof(std::vector<double>);
+                            sizeof(SolverPendingIncrements) + sizeof(StepProfile) +
+                            sizeof(std::unique_ptr<ImplicitViscosity>) +
+                            4 * sizeof(std::vector<double>);
   EXPECT_EQ(sizeof(ExplicitSolver), known);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-// One simulation from a scenario to a complete run folder (DESIGN.md §1):
-//   <output>/<name>/run.log        every parameter as resolved, the discretization, the step
+// One simulation from a scenario to a complete run folder (docs/scenario.md "Outputs"):
+//   <output>/<name>/run.log        every parameter as resolved, the discretization, the step,
+//                                  and at the end the step control's record and the profile
 //   <output>/<name>/series.csv     time series, one row per series period (flushed per row)
 //   <output>/<name>/fields.pvd     ParaView index of fields/NNNNNN.vtu snapshots
 //   <output>/<name>/checkpoint.bin the state at the last checkpoint ([output]
@@ -13,19 +14,27 @@
 // A progress line (simulated time, steps/s, ETA) goes to `progress` when it is set.
 #include <filesystem>
 #include <ostream>
+#include <vector>
 
 #include "scenario/scenario.h"
+#include "solver/step_profile.h"
 
 namespace sg {
+
+class RunObserver;  // run/run_observer.h
 
 struct RunOptions {
   std::ostream* progress = nullptr;  // progress line and summary; nullptr: silent
   std::filesystem::path
       output_root_override;  // non-empty: replaces the scenario's [output] directory
   bool resume = false;       // continue the run folder from its checkpoint.bin
+  bool profile = false;      // the progress line shows the share of each phase of the step
   // >= 0: stop after this many steps (of this call), leaving the folder as a killed run
   // leaves it (series.csv.partial, no final snapshot): to test resuming.
   long stop_after_steps = -1;
+  // More observers of the loop (run/run_observer.h), called after the run's own outputs, in
+  // this order: tests, and programs that embed a run.
+  std::vector<RunObserver*> observers;
 };
 
 struct RunSummary {
@@ -38,6 +47,7 @@ struct RunSummary {
   bool completed = true;        // false: stopped by stop_after_steps
   long resumed_from_step = -1;  // the checkpoint's step when resumed
   int checkpoints_written = 0;  // by this call
+  StepProfile profile;          // wall time per phase of this call's steps and outputs
 };
 
 RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options);

@@ -1,0 +1,117 @@
+// The IMEX integrator against the explicit one on the papers' viscosities
+// (solver/implicit_viscosity.h): a 60-grain cohesive shear cell (L = 20, E = 10, nu = 0.495,
+// node spacing 0.12, as the papers' grains but fewer), compacted for 3 time units once (IMEX,
+// alpha = 0.02), then for each alpha in {0.02, 0.1, 0.3, 0.5}, damping model and integrator:
+// whole adaptive steps of shearing from that state. Reports the step, the wall seconds per
+// simulated time unit (time per step / dt: the step is constant over the timed steps), the
+// conjugate-gradient iterations per step (objective model), and the share of the wall time
+// spent in the velocity phase (the implicit solves).
+//
+//   build/bench/bench_softgrain --benchmark_filter=ImexShearCell --benchmark_min_time=1
+//       --benchmark_out=bench/results/<machine>/imex.csv --benchmark_out_format=csv
+#include <benchmark/benchmark.h>
+#include <omp.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+
+#include "../tests/scenes/shear_cell_scenario.h"
+#include "scenario/scenario.h"
+#include "solver/explicit_solver.h"
+#include "solver/state_snapshot.h"
+#include "solver/step_controller.h"
+
+namespace sg {
+namespace {
+
+constexpr DampingModel kModels[] = {DampingModel::objective, DampingModel::corotational,
+                                    DampingModel::reference_stiffness};
+
+ScenarioDef imex_cell(double alpha, DampingModel model, bool imex) {
+  scenes::CohesiveShearCell c;
+  c.name = "imex_bench";
+  c.grains = 60;
+  c.length = 20.0;
+  c.node_spacing = 0.12;
+  c.poisson = 0.495;
+  c.damping = alpha;
+  c.duration = 10.0;
+  c.compaction_time = 3.0;
+  c.extra_time = imex ? "integrator = \"imex\"\n" : "";
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / "softgrain_bench_imex_cell.toml";
+  std::ofstream(file) << scenes::shear_cell_scenario(c);
+  ScenarioDef s = load_scenario(file);
+  std::filesystem::remove(file);
+  for (MaterialDef& m : s.materials)
+    if (m.name == "soft") m.damping_model = model;
+  return s;
+}
+
+// The compacted state, computed once.
+const StateSnapshot& compacted_state() {
+  static const StateSnapshot state = [] {
+    const ScenarioDef s = imex_cell(0.02, DampingModel::objective, true);
+    Model model = build_model(s);
+    ContactSystem contacts(model, contact_law_table(s), contact_settings(s));
+    ExplicitSolver solver(model, &contacts);
+    StepController controller(solver, &contacts, StepControlParams{});
+    while (solver.state().time < 3.0)
+      controller.advance();
+    StateSnapshot snapshot;
+    capture_state(solver, &contacts, snapshot);
+    return snapshot;
+  }();
+  return state;
+}
+
+void ImexShearCell(benchmark::State& state) {
+  const double alpha = static_cast<double>(state.range(0)) / 1000.0;
+  const DampingModel damping_model = kModels[state.range(1)];
+  const bool imex = state.range(2) != 0;
+  omp_set_num_threads(static_cast<int>(state.range(3)));
+  const StateSnapshot& start = compacted_state();
+  const ScenarioDef s = imex_cell(alpha, damping_model, imex);
+  Model model = build_model(s);
+  ContactSystem contacts(model, contact_law_table(s), contact_settings(s));
+  ExplicitSolver solver(model, &contacts);
+  restore_state(start, solver, &contacts);
+  StepControlParams params;
+  params.reestimate_interval = 0;
+  StepController controller(solver, &contacts, params);
+  controller.advance();  // first factorizations and contact detection outside the timing
+  const StepProfile before = solver.profile();
+  const ViscousSolveStatistics solves_before = solver.viscous_statistics();
+  const auto wall_start = std::chrono::steady_clock::now();
+  for (auto _ : state) {
+    controller.advance();
+    benchmark::ClobberMemory();
+  }
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  const double steps = static_cast<double>(state.iterations());
+  const double dt = controller.next_step();
+  const ViscousSolveStatistics solves = solver.viscous_statistics();
+  state.counters["dt"] = dt;
+  state.counters["nodes"] = static_cast<double>(model.node_count());
+  state.counters["s_per_time_unit"] = wall / steps / dt;
+  state.counters["cg_per_step"] =
+      static_cast<double>(solves.iterations - solves_before.iterations) / steps;
+  state.counters["factorizations"] =
+      static_cast<double>(solves.factorizations - solves_before.factorizations);
+  state.counters["velocity_share"] =
+      (solver.profile()[StepPhase::velocities] - before[StepPhase::velocities]) / wall;
+  state.SetLabel(std::string(to_string(damping_model)) + (imex ? " imex" : " explicit"));
+}
+
+BENCHMARK(ImexShearCell)
+    ->ArgsProduct({{20, 100, 300, 500}, {0, 1, 2}, {0, 1}, {1, 2}})
+    ->ArgNames({"alpha_milli", "model", "imex", "threads"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+}  // namespace
+}  // namespace sg

@@ -1,0 +1,89 @@
+#include "run/run_log.h"
+
+#include <omp.h>
+
+#include <iomanip>
+#include <sstream>
+
+#include "io/atomic_file.h"
+
+namespace sg {
+
+namespace {
+
+void write_parameters(std::ostream& out, const ScenarioDef& s) {
+  out << "softgrain run log\nscenario = " << s.source.string() << "\nname = " << s.name
+      << "\nthreads = " << omp_get_max_threads() << "\n\n[time]\nduration = " << s.duration
+      << "\nsafety = " << s.time_step_safety << "\nfixed_step = " << s.fixed_time_step
+      << "\nmass_scaling_step = " << s.mass_scaling_step << "\nintegrator = \""
+      << (s.implicit_viscosity ? "imex" : "explicit") << "\"\nimex_tolerance = " << s.imex_tolerance
+      << "\n\n[output]\nseries_period = " << s.series_period
+      << "\nfield_period = " << s.field_period << "\ncheckpoint_period = " << s.checkpoint_period
+      << "\n\n[discretization]\nnode_spacing = " << s.discretization.mesh.spacing
+      << "\nmls_neighbours = " << s.discretization.mls.neighbours
+      << "\nmls_support_factor = " << s.discretization.mls.support_factor
+      << "\ngauss_points = " << s.discretization.gauss_points
+      << "\nsmoothing_iterations = " << s.discretization.mesh.smoothing_iterations
+      << "\n\n[physics]\ngravity = [" << s.gravity.x() << ", " << s.gravity.y() << "]\n";
+  for (const MaterialDef& m : s.materials)
+    out << "\n[[materials]]\nname = \"" << m.name << "\"\nlaw = \"" << to_string(m.law)
+        << "\"\nyoung = " << m.young << "\npoisson = " << m.poisson << "\ndensity = " << m.density
+        << "\ndamping = " << m.damping << "\ndamping_model = \"" << to_string(m.damping_model)
+        << "\"\n";
+}
+
+void write_model(std::ostream& out, const Simulation& sim) {
+  const Model& model = sim.model;
+  const StableStep& stable = sim.first_estimate;
+  out << "\n# model: " << model.bodies.size() << " bodies, " << model.node_count() << " nodes, "
+      << model.gauss_point_count() << " Gauss points, " << model.gauss_rows.entries()
+      << " shape-function entries\n";
+  if (stable.limiting_body >= 0)
+    out << "# stable step estimate: omega_max = " << stable.omega_max << " (body '"
+        << model.bodies[static_cast<std::size_t>(stable.limiting_body)].name << "'), "
+        << (stable.damping_limited ? "damping-limited" : "wave-speed-limited")
+        << ", dt = " << stable.dt << "\n";
+  out << sim.mass_scaling_note << "# first time step: " << sim.first_dt
+      << " (adaptive: see docs/scenario.md [time])\n";
+}
+
+}  // namespace
+
+void write_run_log(const std::filesystem::path& path, const ScenarioDef& scenario,
+                   const Simulation& simulation, const std::string& notes) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << std::setprecision(10);
+    write_parameters(out, scenario);
+    write_model(out, simulation);
+    out << notes;
+  });
+}
+
+std::string describe_step_control(const StepStatistics& st) {
+  std::ostringstream note;
+  note << std::setprecision(6) << "# steps: " << st.accepted << " accepted, " << st.rejected
+       << " rejected; dt in [" << st.dt_min << ", " << st.dt_max << "]; " << st.estimates
+       << " estimates of the critical step (this session)\n";
+  if (!st.last_rejection.empty()) note << "# last rejection: " << st.last_rejection << "\n";
+  return note.str();
+}
+
+std::string describe_profile(const StepProfile& profile, double wall_seconds) {
+  std::ostringstream s;
+  const double total = profile.total();
+  s << std::fixed << std::setprecision(3) << "# profile (wall seconds of this session, "
+    << omp_get_max_threads() << " threads): " << wall_seconds << " s in all, " << total
+    << " s in the loop";
+  if (profile.steps > 0)
+    s << std::setprecision(1) << ", " << 1e6 * total / static_cast<double>(profile.steps)
+      << " us per force evaluation";
+  s << "\n";
+  for (std::size_t p = 0; p < kStepPhaseCount; ++p)
+    s << "#   " << std::left << std::setw(16) << phase_name(static_cast<StepPhase>(p)) << std::right
+      << std::setprecision(3) << std::setw(10) << profile.seconds[p] << " s  "
+      << std::setprecision(1) << std::setw(5)
+      << (total > 0.0 ? 100.0 * profile.seconds[p] / total : 0.0) << "%\n";
+  return s.str();
+}
+
+}  // namespace sg

@@ -1,0 +1,23 @@
+#pragma once
+// run.log: every parameter as resolved, the discretization, the first step, the mass
+// scaling, the resume point; rewritten (atomically) at the end with the step control's
+// record and the profile of the run's phases. render/ reads the scenario's path from it.
+#include <filesystem>
+#include <string>
+
+#include "run/simulation.h"
+#include "scenario/scenario.h"
+
+namespace sg {
+
+// `notes`: lines ("# ...\n") appended after the resolved parameters.
+void write_run_log(const std::filesystem::path& path, const ScenarioDef& scenario,
+                   const Simulation& simulation, const std::string& notes);
+
+// The step controller's record of this session ("# steps: ...").
+std::string describe_step_control(const StepStatistics& statistics);
+
+// The profile: wall seconds and share per phase, and the time per step.
+std::string describe_profile(const StepProfile& profile, double wall_seconds);
+
+}  // namespace sg

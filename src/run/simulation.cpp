@@ -1,0 +1,66 @@
+#include "run/simulation.h"
+
+#include "solver/mass_scaling.h"
+
+namespace sg {
+
+namespace {
+
+std::unique_ptr<ContactSystem> make_contacts(const ScenarioDef& s, Model& model) {
+  if (s.contact_laws.empty()) return nullptr;
+  return std::make_unique<ContactSystem>(model, contact_law_table(s), contact_settings(s));
+}
+
+// Mass scaling on the built model, before anything is estimated or restored: deterministic,
+// so a resumed run rebuilds the same masses (and the checkpoint fingerprint checks them).
+std::string scale_masses(const ScenarioDef& s, Model& model, const ContactSystem* contacts) {
+  if (s.mass_scaling_step <= 0.0) return "";
+  const MassScalingReport report = apply_mass_scaling(
+      model, s.mass_scaling_step, s.time_step_safety, contacts ? contacts->max_stiffness() : 0.0);
+  return "# " + describe(report, model) + "\n";
+}
+
+StepControlParams step_control_params(const ScenarioDef& s) {
+  StepControlParams p;
+  p.safety = s.time_step_safety;
+  p.fixed_step = s.fixed_time_step;
+  p.reestimate_interval = s.reestimate_interval;
+  p.tolerance = s.step_tolerance;
+  return p;
+}
+
+}  // namespace
+
+Simulation::Simulation(const ScenarioDef& scenario)
+    : model(build_model(scenario)),
+      contacts(make_contacts(scenario, model)),
+      mass_scaling_note(scale_masses(scenario, model, contacts.get())),
+      solver(model, contacts.get()),
+      controller(solver, contacts.get(), step_control_params(scenario)),
+      first_estimate(controller.last_estimate()),
+      first_dt(controller.next_step()),
+      // Computed before any restore: the model's fixed data only.
+      fingerprint(fingerprint_of(model, run_settings(scenario, first_dt))) {}
+
+std::vector<double> run_settings(const ScenarioDef& s, double first_dt) {
+  std::vector<double> v = {first_dt,
+                           s.series_period,
+                           s.field_period,
+                           s.step_tolerance,
+                           static_cast<double>(s.reestimate_interval),
+                           s.mass_scaling_step};
+  // (Appended only when set, so that explicit runs keep their checkpoints bitwise.)
+  if (s.implicit_viscosity) v.insert(v.end(), {1.0, s.imex_tolerance});
+  if (!s.contact_laws.empty()) {
+    const ContactSettings c = contact_settings(s);
+    v.insert(v.end(), {c.cutoff, c.skin});
+    for (const ContactLawDef& law : s.contact_laws) {
+      const ContactLawParams& p = law.params;
+      v.insert(v.end(), {static_cast<double>(p.kind), p.normal_stiffness, p.tangential_stiffness,
+                         p.friction, p.adhesion, p.shear_strength});
+    }
+  }
+  return v;
+}
+
+}  // namespace sg

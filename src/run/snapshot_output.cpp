@@ -1,0 +1,75 @@
+#include "run/snapshot_output.h"
+
+#include <cstdio>
+
+#include "io/contact_vtk.h"
+#include "io/grain_snapshot_writer.h"
+
+namespace sg {
+
+SnapshotOutput::SnapshotOutput(RunContext& context)
+    : context_(context),
+      fields_pvd_(context.folder.dir / "fields.pvd"),
+      contacts_pvd_(context.folder.dir / "contacts.pvd") {}
+
+void SnapshotOutput::begin(bool resumed) {
+  if (!resumed) return;
+  fields_pvd_.restore(context_.loop.field_entries);
+  if (context_.simulation.contacts) contacts_pvd_.restore(context_.loop.contact_entries);
+}
+
+std::string SnapshotOutput::snapshot_name(const char* extension) const {
+  char name[32];
+  std::snprintf(name, sizeof name, "%06d.%s", context_.loop.next_snapshot, extension);
+  return std::string(name);
+}
+
+void SnapshotOutput::prepare(const RunInstant& now) {
+  const auto& entries = fields_pvd_.entries();
+  snapshot_due_ = now.time >= context_.loop.next_field_time - context_.time_tolerance &&
+                  (entries.empty() || now.time > entries.back().first);
+  if (snapshot_due_) write_state_files();
+}
+
+void SnapshotOutput::commit(const StepTaken& step) {
+  if (!snapshot_due_) return;
+  add_to_collections(step.start.time);
+  context_.loop.next_field_time += context_.scenario.field_period;
+}
+
+void SnapshotOutput::finish() {
+  write_state_files();
+  Simulation& sim = context_.simulation;
+  if (sim.contacts) {
+    // The final state has had no force evaluation: its contact network is evaluated here,
+    // on a copy of the state that is put back after (the evaluation moves the contact
+    // histories and the rigid bodies' forces on; nothing else of the run changes).
+    capture_state(sim.solver, sim.contacts.get(), final_state_);
+    sim.contacts->add_contact_forces(sim.model);
+    add_to_collections(sim.solver.state().time);
+    restore_state(final_state_, sim.solver, sim.contacts.get());
+  } else {
+    add_to_collections(sim.solver.state().time);
+  }
+}
+
+void SnapshotOutput::write_state_files() {
+  const std::filesystem::path& dir = context_.folder.dir;
+  write_vtu_snapshot(context_.simulation.model, dir / "fields" / snapshot_name("vtu"));
+  write_grain_snapshot(context_.simulation.model, dir / "grains" / snapshot_name("csv"));
+}
+
+void SnapshotOutput::add_to_collections(double time) {
+  const std::string name = snapshot_name("vtu");
+  RunLoopState& loop = context_.loop;
+  fields_pvd_.add(time, "fields/" + name);
+  loop.field_entries = fields_pvd_.entries();
+  if (const ContactSystem* contacts = context_.simulation.contacts.get()) {
+    write_contact_snapshot(*contacts, context_.folder.dir / "contacts" / name);
+    contacts_pvd_.add(time, "contacts/" + name);
+    loop.contact_entries = contacts_pvd_.entries();
+  }
+  ++loop.next_snapshot;
+}
+
+}  // namespace sg

@@ -1,0 +1,95 @@
+#pragma once
+// The implicit half of the IMEX integrator ([time] integrator = "imex"): the Kelvin-Voigt
+// damping of each deformable body integrated implicitly in the velocity, so that the step is
+// set by the undamped wave speed and no longer by the viscosity (docs/method.md "IMEX").
+//
+// Central difference with the viscous force at the full-step velocity (trapezoidal /
+// Crank-Nicolson in v, theta = 1/2):
+//   M (v_n+1/2 - v_n-1/2) = h_n (f_el(u_n) + f_ext + f_c - C (v_n-1/2 + v_n+1/2) / 2),
+// i.e., with F_n the force the explicit phases computed (its viscous part -C v_n-1/2 at the
+// old velocity, model/internal_forces.h) and dv = v_n+1/2 - v_n-1/2,
+//   (M + h/2 C) dv = h F_n.
+// For a damped mode (omega, xi = alpha omega / 2) the update is stable for omega dt <= 2 at any
+// xi (the explicit one needs omega dt <= 2 (sqrt(1 + xi^2) - xi)), and it is second order
+// (time-symmetric), where the explicit damping at v_n-1/2 is first order in the damping term.
+//
+// The operator C of each damping model (material/material.h DampingModel):
+//   reference_stiffness  C = alpha K0, constant: a stored sparse LDL^T factor of
+//                        A0 = M + h/2 alpha K0 solves exactly (refactored when h changes);
+//   corotational         C = R alpha K0 R^T with R the body's mean rotation at u_n; the lumped
+//                        mass is isotropic per node, so M + h/2 C = R A0 R^T: the same factor
+//                        after turning the right-hand side, exact;
+//   objective            C(F) from S_v = alpha C0 : sym(F^T F_dot), P_v = F S_v, applied
+//                        matrix-free (model/internal_forces.h apply_viscous_operator) and solved
+//                        by conjugate gradients preconditioned with R A0^-1 R^T, started from
+//                        the corotational solution (exact for an undeformed body).
+// Eigen's SimplicialLDLT (AMD ordering) factors A0; no hand-written factorization.
+//
+// The force the update applied is F* = M dv / h (exactly what moved the velocities, whatever
+// the solve's residual), and the viscous force booked by the ledger is f_v* = f_v(v_n-1/2) +
+// F* - F_n = -C (v_n-1/2 + v_n+1/2) / 2: the ledger (solver/explicit_solver.h) stays closed.
+//
+// Bodies with driven nodes (the back faces of deformable strips) keep the explicit viscous
+// update: their driven components would be constraints of the solve.
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#include <memory>
+#include <vector>
+
+#include "model/model.h"
+
+namespace sg {
+
+// Which bodies the IMEX integrator treats implicitly: deformable, damped, without node drives.
+bool has_implicit_viscosity(const Model& model, BodyId body);
+
+struct ViscousSolveStatistics {
+  long solves = 0;          // body solves
+  long iterations = 0;      // conjugate-gradient iterations (objective model)
+  long factorizations = 0;  // numeric factorizations of A0
+};
+
+class ImplicitViscosity {
+ public:
+  // `tolerance`: relative residual |r| / |h F| at which conjugate gradients stop.
+  ImplicitViscosity(const Model& model, double tolerance);
+
+  // The velocity increment dv of `body` (local numbering) for the step with velocity interval
+  // h: solves (M + h/2 C) dv = h F with F = fx, fy (the body's total force, local numbering)
+  // at displacement parameters ux, uy. Thread-safe for different bodies.
+  void solve(const Model& model, BodyId body, double h, const double* ux, const double* uy,
+             const double* fx, const double* fy, double* dvx, double* dvy);
+
+  ViscousSolveStatistics statistics() const;  // summed over bodies in body order
+
+ private:
+  using SparseMatrix = Eigen::SparseMatrix<double>;
+  struct BodySystem {
+    BodyId body = -1;
+    SparseMatrix stiffness;  // alpha K0, DOF 2 i (x) and 2 i + 1 (y) of local node i
+    Eigen::VectorXd mass;    // lumped mass per DOF
+    Eigen::SimplicialLDLT<SparseMatrix> factor;  // of A0 = M + h/2 alpha K0
+    double factor_h = 0.0;
+    std::vector<Mat2> gradients;  // objective model: F per Gauss point
+    Eigen::VectorXd rhs, x, r, z, p, q, work_x, work_y, split_x, split_y;  // scratch
+    ViscousSolveStatistics statistics;
+  };
+  double tolerance_;
+  std::vector<int> system_of_body_;                   // index into systems_, or -1 (explicit)
+  std::vector<std::unique_ptr<BodySystem>> systems_;  // (Eigen's factors cannot be moved)
+
+  void factorize(BodySystem& system, double h);
+  // z = R A0^-1 R^T r (R block-diagonal per node).
+  void apply_preconditioner(BodySystem& system, const Mat2& rotation, const Eigen::VectorXd& r,
+                            Eigen::VectorXd& z) const;
+  // q = (M + h/2 C(F)) x, C applied matrix-free.
+  void apply_operator(const Model& model, BodySystem& system, double h, const Mat2& rotation,
+                      const Eigen::VectorXd& x, Eigen::VectorXd& q) const;
+};
+
+// alpha K0 of a deformable body: the small-strain plane-strain stiffness of its reference
+// configuration times its damping coefficient, assembled from its Gauss rows
+// (K0_IJ = sum_g w_g B_I^T D B_J), DOF 2 i (x) and 2 i + 1 (y) of local node i.
+Eigen::SparseMatrix<double> assemble_damping_stiffness(const Model& model, BodyId body);
+
+}  // namespace sg

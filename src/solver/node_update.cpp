@@ -1,0 +1,275 @@
+// The field nodes' phases of ExplicitSolver::step: the velocity update (free nodes, driven
+// nodes and load-driven carriers) and the position update. See explicit_solver.h.
+#include <cmath>
+#include <type_traits>
+
+#include "core/error.h"
+#include "solver/explicit_solver.h"
+#include "solver/implicit_viscosity.h"
+
+namespace sg {
+
+namespace {
+
+// Per body, the sums of the velocity update (NodeUpdate's node fields, in this order, and the
+// IMEX damping correction).
+constexpr std::size_t kBodySums = 6;
+// Per node drive: the imposed velocities at t_n+1/2 (2: the drive's history, or the carrier's
+// new velocity under load), the reaction (2) and R . v_n-1/2, R . v_n+1/2 (2, velocity-driven
+// components only). A drive's nodes are in one body: one thread writes its sums.
+constexpr std::size_t kDriveSums = 6;
+
+}  // namespace
+
+ExplicitSolver::NodeUpdate ExplicitSolver::update_node_velocities(const StepSizes& steps) {
+  const double h = steps.velocity;
+  NodeState& n = model_.nodes;
+  const double gx = model_.gravity.x(), gy = model_.gravity.y();
+  const std::size_t drive_count = model_.node_drives.size();
+  body_sums_.assign(kBodySums * model_.bodies.size() + kDriveSums * drive_count, 0.0);
+  double* const drive_data = body_sums_.data() + kBodySums * model_.bodies.size();
+  const double t_mid = state_.time + 0.5 * steps.next;  // velocities live at half steps
+  for (std::size_t d = 0; d < drive_count; ++d)
+    for (int c = 0; c < 2; ++c)
+      if (model_.node_drives[d].mode[c] == DriveMode::velocity)
+        drive_data[kDriveSums * d + static_cast<std::size_t>(c)] =
+            model_.node_drives[d].velocity[c](t_mid);
+  if (implicit_) {
+    increment_x_.resize(n.vx.size());
+    increment_y_.resize(n.vy.size());
+  }
+  NodeUpdate update;
+  update.carriers = advance_node_carriers(h, drive_data);
+
+  // Per body: kinetic energy (time-centred), power of gravity, f_v . v_n+1/2, and of the
+  // total force F_n on each parameter F_n . v_n+1/2 and F_n . F_n / m (the kinetic energies
+  // K_n^+ and K_n^- of the header, as corrections of the time-centred one). Sums are kept per
+  // body and added in body order: the result does not depend on the number of threads.
+  const int body_count = static_cast<int>(model_.bodies.size());
+#pragma omp parallel for schedule(static)
+  for (int b = 0; b < body_count; ++b) {
+    const Body& body = model_.bodies[static_cast<std::size_t>(b)];
+    const double bgx = gx / body.mass_scale, bgy = gy / body.mass_scale;
+    double kinetic = 0.0, external_power = 0.0, viscous_power = 0.0, force_power = 0.0,
+           force_square = 0.0;
+    // Two instances of the node loop: grains (no driven nodes, the hot case) never look at
+    // NodeState::drive; a strip with a driven back face checks each node.
+    auto advance_nodes = [&](auto has_driven_nodes) {
+      for (int k = body.node_begin; k < body.node_end; ++k) {
+        const auto i = static_cast<std::size_t>(k);
+        const double vx_old = n.vx[i], vy_old = n.vy[i];
+        const int drive = decltype(has_driven_nodes)::value ? n.drive[i] : -1;
+        if (drive < 0) {
+          n.vx[i] += h * n.inverse_mass[i] * n.fx[i];
+          n.vy[i] += h * n.inverse_mass[i] * n.fy[i];
+        } else {
+          // Driven component: v_n+1/2 imposed, the reaction R_I = m_I (v_n+1/2 - v_n-1/2) / h
+          // - f_I added to the force (header).
+          const NodeDrive& nd = model_.node_drives[static_cast<std::size_t>(drive)];
+          double* sums = drive_data + kDriveSums * static_cast<std::size_t>(drive);
+          double* velocity[2] = {&n.vx[i], &n.vy[i]};
+          double* force[2] = {&n.fx[i], &n.fy[i]};
+          for (std::size_t c = 0; c < 2; ++c) {
+            if (nd.mode[c] == DriveMode::free) {
+              *velocity[c] += h * n.inverse_mass[i] * *force[c];
+              continue;
+            }
+            const double v_old = *velocity[c], v_new = sums[c];
+            const double reaction = n.mass[i] * (v_new - v_old) / h - *force[c];
+            *force[c] += reaction;  // fx, fy: the total force on the parameter
+            *velocity[c] = v_new;
+            sums[2 + c] += reaction;
+            if (nd.mode[c] == DriveMode::velocity) {  // a carrier's work: as a servo load's
+              sums[4] += reaction * v_old;
+              sums[5] += reaction * v_new;
+            }
+          }
+        }
+        kinetic += 0.5 * n.mass[i] * (vx_old * n.vx[i] + vy_old * n.vy[i]);
+        force_power += n.fx[i] * n.vx[i] + n.fy[i] * n.vy[i];
+        force_square += n.inverse_mass[i] * (n.fx[i] * n.fx[i] + n.fy[i] * n.fy[i]);
+        viscous_power += n.viscous_fx[i] * n.vx[i] + n.viscous_fy[i] * n.vy[i];
+        external_power += n.mass[i] * (bgx * n.vx[i] + bgy * n.vy[i]);
+      }
+    };
+    // IMEX (implicit_viscosity.h): the body's increments dv from (M + h/2 C) dv = h F, the
+    // force applied F* = M dv / h; the viscous force booked becomes f_v + F* - F, whose power
+    // against v_n-1/2 corrects the closing half of the damping dissipation.
+    double damping_correction = 0.0;
+    auto advance_implicit_nodes = [&]() {
+      const auto o = static_cast<std::size_t>(body.node_begin);
+      double* dvx = increment_x_.data() + o;
+      double* dvy = increment_y_.data() + o;
+      implicit_->solve(model_, b, h, n.ux.data() + o, n.uy.data() + o, n.fx.data() + o,
+                       n.fy.data() + o, dvx, dvy);
+      for (int k = body.node_begin; k < body.node_end; ++k) {
+        const auto i = static_cast<std::size_t>(k);
+        const double vx_old = n.vx[i], vy_old = n.vy[i];
+        const double ax = dvx[i - o], ay = dvy[i - o];
+        const double fx = n.mass[i] * ax / h, fy = n.mass[i] * ay / h;
+        damping_correction += (fx - n.fx[i]) * vx_old + (fy - n.fy[i]) * vy_old;
+        n.viscous_fx[i] += fx - n.fx[i];
+        n.viscous_fy[i] += fy - n.fy[i];
+        n.fx[i] = fx;
+        n.fy[i] = fy;
+        n.vx[i] = vx_old + ax;
+        n.vy[i] = vy_old + ay;
+        kinetic += 0.5 * n.mass[i] * (vx_old * n.vx[i] + vy_old * n.vy[i]);
+        force_power += n.fx[i] * n.vx[i] + n.fy[i] * n.vy[i];
+        force_square += n.inverse_mass[i] * (n.fx[i] * n.fx[i] + n.fy[i] * n.fy[i]);
+        viscous_power += n.viscous_fx[i] * n.vx[i] + n.viscous_fy[i] * n.vy[i];
+        external_power += n.mass[i] * (bgx * n.vx[i] + bgy * n.vy[i]);
+      }
+    };
+    if (implicit_ && has_implicit_viscosity(model_, b))
+      advance_implicit_nodes();
+    else if (body.node_drive < 0)
+      advance_nodes(std::false_type{});
+    else
+      advance_nodes(std::true_type{});
+    double* sums = body_sums_.data() + kBodySums * static_cast<std::size_t>(b);
+    sums[0] = kinetic;
+    sums[1] = external_power;
+    sums[2] = viscous_power;
+    sums[3] = force_power;
+    sums[4] = force_square;
+    sums[5] = damping_correction;
+  }
+  for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
+    const double* sums = body_sums_.data() + kBodySums * b;
+    update.kinetic += sums[0];
+    update.external_power += sums[1];
+    update.viscous_power += sums[2];
+    update.force_power += sums[3];
+    update.force_square += sums[4];
+    if (implicit_) update.damping_correction -= sums[5];
+  }
+  for (std::size_t d = 0; d < drive_count; ++d) {
+    const double* sums = drive_data + kDriveSums * d;
+    model_.node_drives[d].reaction = Vec2(sums[2], sums[3]);
+    update.drive_work_old += sums[4];
+    update.drive_work_new += sums[5];
+  }
+  return update;
+}
+
+ExplicitSolver::ServoPower ExplicitSolver::advance_node_carriers(double h,
+                                                                 double* drive_data) const {
+  ServoPower power;
+  const NodeState& n = model_.nodes;
+  for (std::size_t d = 0; d < model_.node_drives.size(); ++d) {
+    const NodeDrive& nd = model_.node_drives[d];
+    for (std::size_t c = 0; c < 2; ++c) {
+      SG_VERIFY(nd.mode[c] != DriveMode::force,
+                "body '" << model_.bodies[static_cast<std::size_t>(nd.body)].name
+                         << "': a node drive cannot impose a constant force (use load)");
+      if (nd.mode[c] != DriveMode::load) continue;
+      SG_VERIFY(!nd.nodes.empty(), "body '" << model_.bodies[static_cast<std::size_t>(nd.body)].name
+                                            << "': a load-driven node drive has no nodes");
+      // The carrier: mass, momentum and received force of its nodes, summed in node order
+      // (serial: the same bits on any number of threads).
+      const std::vector<double>& v = c == 0 ? n.vx : n.vy;
+      const std::vector<double>& f = c == 0 ? n.fx : n.fy;
+      double mass = 0.0, momentum = 0.0, received = 0.0;
+      for (int k : nd.nodes) {
+        const auto i = static_cast<std::size_t>(k);
+        mass += n.mass[i];
+        momentum += n.mass[i] * v[i];
+        received += f[i];
+      }
+      // M (v_n+1/2 - v_n-1/2) = h (received + F(t_n) - c v_n+1/2), as a servo-loaded rigid
+      // degree of freedom (advance_rigid_bodies), with M v_n-1/2 the carrier's momentum.
+      const double load = nd.load[c](state_.time);
+      const double damping = nd.load_damping[c];
+      const double v_old = momentum / mass;
+      const double v_new = (momentum + h * (received + load)) / (mass + h * damping);
+      drive_data[kDriveSums * d + c] = v_new;
+      power.load_old += load * v_old;
+      power.load_new += load * v_new;
+      power.servo_old += damping * v_new * v_old;
+      power.servo_new += damping * v_new * v_new;
+    }
+  }
+  return power;
+}
+
+void ExplicitSolver::update_node_positions(double dt) {
+  NodeState& n = model_.nodes;
+  const int body_count = static_cast<int>(model_.bodies.size());
+  body_probes_.assign(model_.bodies.size(), 0.0);
+#pragma omp parallel for schedule(static)
+  for (int b = 0; b < body_count; ++b) {
+    const Body& body = model_.bodies[static_cast<std::size_t>(b)];
+    // A probe that becomes NaN iff some updated value is not finite (0 * inf = NaN).
+    double finite_probe = 0.0;
+    for (int k = body.node_begin; k < body.node_end; ++k) {
+      const auto i = static_cast<std::size_t>(k);
+      n.ux[i] += dt * n.vx[i];
+      n.uy[i] += dt * n.vy[i];
+      finite_probe += 0.0 * (n.ux[i] + n.uy[i] + n.vx[i] + n.vy[i]);
+    }
+    body_probes_[static_cast<std::size_t>(b)] = finite_probe;
+  }
+  if (model_.periodic_x) wrap_periodic_bodies();
+}
+
+void ExplicitSolver::finish_step(double dt) {
+  state_.previous_dt = dt;
+  state_.time += dt;
+  ++state_.step;
+  double finite_probe = 0.0;
+  for (double p : body_probes_)
+    finite_probe += p;
+  if (finite_probe != 0.0 || !std::isfinite(finite_probe)) check_finite_velocities();
+}
+
+void ExplicitSolver::wrap_periodic_bodies() {
+  const double period = model_.x_max - model_.x_min;
+  NodeState& n = model_.nodes;
+  for (const Body& body : model_.bodies) {
+    double shift = 0.0;
+    if (body.kind == BodyKind::rigid) {
+      double& x = model_.rigid.x[static_cast<std::size_t>(body.rigid_index)];
+      if (x < model_.x_min)
+        shift = period;
+      else if (x >= model_.x_max)
+        shift = -period;
+      x += shift;
+      continue;
+    }
+    // A deformable body is moved by one period through its reference positions: u, v and
+    // every precomputed row are invariant under a translation of the reference frame.
+    const auto first = static_cast<std::size_t>(body.node_begin);
+    double x = n.ref_x[first] + n.ux[first];
+    if (body.open_contour) {
+      // A strip spans the cell: its first contour node sits at one end, where round-off would
+      // wrap it back and forth every step. Its middle (between its two ends) is kept in the
+      // cell instead: a strip drifting along x moves by a period once it has drifted L/2.
+      const auto last = static_cast<std::size_t>(body.boundary_end - 1);
+      x = 0.5 * (x + n.ref_x[last] + n.ux[last]);
+    }
+    if (x < model_.x_min)
+      shift = period;
+    else if (x >= model_.x_max)
+      shift = -period;
+    if (shift != 0.0)
+      for (int i = body.node_begin; i < body.node_end; ++i)
+        n.ref_x[static_cast<std::size_t>(i)] += shift;
+  }
+}
+
+void ExplicitSolver::check_finite_velocities() const {
+  const NodeState& n = model_.nodes;
+  for (const Body& body : model_.bodies)
+    for (int i = body.node_begin; i < body.node_end; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      if (!std::isfinite(n.vx[k]) || !std::isfinite(n.vy[k]) || !std::isfinite(n.ux[k]) ||
+          !std::isfinite(n.uy[k]))
+        SG_THROW("body '" << body.name << "', node " << i - body.node_begin
+                          << ": non-finite velocity or displacement after step " << state_.step
+                          << " (time " << state_.time
+                          << "): the time step is too large or the input is inconsistent");
+    }
+}
+
+}  // namespace sg
