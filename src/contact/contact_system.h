@@ -1,5 +1,5 @@
 #pragma once
-// The contact stage of a time step (DESIGN.md §2 "Contact"; paper 000 §2, paper 001 §2.1):
+// The contact stage of a time step (docs/method.md §Contact; paper 000 §2, paper 001 §2.1):
 // two-pass node-to-segment penalty contact between every pair of distinct bodies.
 //
 //   1. contour positions of all bodies (deformable: MLS-evaluated boundary nodes; rigid:

@@ -1,13 +1,13 @@
 #pragma once
 // Narrow phase of the node-to-segment contact: where a slave node stands relative to the
-// contour of a master body. Pure geometry (STYLE.md more-habits 3): positions in, projection
-// out; no body, no state.
+// contour of a master body. Pure geometry (docs/architecture.md §Conventions 5): positions in,
+// projection out; no body, no state.
 //
 // Contours. A contour is a polyline through a body's boundary nodes with the body's material
 // on the LEFT of the direction of travel, so the outward normal of segment [a, b] is
 // n = -perp(b - a) / |b - a| and the tangent is t = perp(n) = (b - a) / |b - a|:
-//   - a closed body contour is counter-clockwise (DESIGN.md §2) and the last segment joins
-//     the last point back to the first;
+//   - a closed body contour is counter-clockwise (docs/method.md §Bodies) and the last
+//     segment joins the last point back to the first;
 //   - a periodic strip (a first body spanning the periodic cell) is closed too, but its last
 //     segment joins the last point to (first point + closing_shift), closing_shift = (±L, 0);
 //     e.g. the top surface of a lower first body runs from right to left;

@@ -1,5 +1,5 @@
 #pragma once
-// Errors and the three tiers of checks (STYLE.md habit 10).
+// Errors and the three tiers of checks (docs/architecture.md §Conventions 7 and 8).
 //
 //   SG_VERIFY(cond, msg)   always on: user input and user-facing invariants. Throws sg::Error.
 //   SG_ASSERT(cond, msg)   programming errors; on unless NDEBUG (debug, relwithdebinfo builds).

@@ -1,5 +1,5 @@
 #pragma once
-// Adaptive explicit step (issue #4 "Step control"; DESIGN.md §2 "Time integration").
+// Adaptive explicit step (issue #4 "Step control"; docs/method.md §Step control and rejections).
 //
 // The step is bounded by stability, not by accuracy: for the papers' parameters the critical
 // step (damping-aware, stable_time_step.h) is far below what the accuracy of the slow
