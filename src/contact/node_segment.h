@@ -33,6 +33,9 @@
 //   normal traction (which depends on the gap) does not jump.
 // The inside/outside sign of a vertex projection comes from the vertex pseudo-normal (the
 // sum of the two adjacent segment normals), which is exact for the closest vertex.
+// One narrow phase serves every pair of bodies, rigid or deformable (paper 000 §4: "the same
+// contact algorithm may then be applied for any couple of grains"), so there is no dispatch
+// table keyed by shape types.
 #include <span>
 
 #include "geometry/vec2.h"

@@ -6,6 +6,10 @@
 // Plane strain: the deformation gradient is 2x2 in the plane and F_zz = 1.
 // All stresses are per unit reference area (P, S) or current area (Cauchy), in the units of
 // the Young modulus.
+//
+// No tangent(F) beside the stress, although a material interface usually has one: the explicit
+// scheme never needs a tangent, the stable-step estimate differences the force kernel instead
+// (solver/stable_time_step.h), and the tests check P = dW/dF by central differences.
 #include <string>
 
 #include "geometry/vec2.h"
