@@ -1,6 +1,7 @@
 // Meshing cost of a packing's grains: 2000 discs of radius 0.45-0.55 at node spacing 0.08
-// (~40 contour nodes, ~160 field nodes each), with and without Lloyd smoothing. DESIGN.md §3
-// quotes ~13 s for this case with CGAL's own Lloyd; one call of mesh_domain per grain, one
+// (~40 contour nodes, ~160 field nodes each), with and without Lloyd smoothing. CGAL's own
+// Lloyd smoother took ~13 s for this case on the 2-core development machine; one call of
+// mesh_domain per grain, one
 // thread (the scenario builders mesh grains one after the other).
 //
 //   build/bench/bench_softgrain --benchmark_filter=MeshDiscs

@@ -1,7 +1,9 @@
 #pragma once
-// The run's time series (`series.csv`), as the engine writes it (DESIGN.md §1):
+// The run's time series (`series.csv`), as the engine writes it (docs/scenario.md [output],
+// docs/method.md §Energy ledger):
 //   time,step,dt,kinetic_energy,elastic_energy,external_work,damping_dissipation,
-//   contact_dissipation,energy_residual, then per driven body B: B_fx,B_fy,B_x,B_y
+//   contact_dissipation,servo_dissipation,energy_residual, then per driven body B:
+//   B_fx,B_fy,B_x,B_y
 // (force B receives from the granular layer, and B's position). Energies and
 // dissipations are cumulative since t = 0. One row per output period.
 #include <span>

@@ -18,7 +18,8 @@
 //    x are taken to the nearest periodic image. A global cubic polyharmonic spline
 //    (phi = r^3 plus a linear polynomial, also C^2 and linear-exact) interpolates the data
 //    exactly but needs a dense O(N^3) solve per snapshot and is not periodic;
-//  - it is the approximation the engine's own discretization uses (DESIGN.md §2).
+//  - it is the approximation the engine's own discretization uses (docs/method.md §MLS shape
+//    functions).
 // It approximates rather than interpolates: grid values are local least-squares fits,
 // which smooth grain-to-grain noise at the scale rho (default 2 grain diameters, below
 // the coherence radius R of 2-3 diameters, so structures are not blurred away).

@@ -26,6 +26,11 @@
 //
 // Determinism: candidates are sorted by (node, segment); nothing depends on threads or on
 // the order of insertion beyond the input indices.
+//
+// Why a class (docs/architecture.md §Conventions 3 keeps state in plain structs): the candidate
+// list is only valid together with the positions it was built from (the skin criterion), and
+// the cell grid is scratch rebuilt with it; the class keeps the two together. Its state is the
+// plain struct BroadPhaseState (capture / restore).
 #include <span>
 #include <vector>
 

@@ -59,8 +59,8 @@ void validate(const ContactLawParams& params, std::string_view context) {
 }
 
 ContactLawParams per_pass_params(const ContactLawParams& params) {
-  // DESIGN.md §2: "each pass carries half of each strength, so that a contact of length l
-  // resists sigma_c l in total".
+  // docs/method.md §Contact, Two-pass scheme: each pass carries half of each strength, so that
+  // a contact of length l resists sigma_c l in total.
   ContactLawParams half = params;
   half.adhesion = 0.5 * params.adhesion;
   half.shear_strength = 0.5 * params.shear_strength;
@@ -124,7 +124,7 @@ ContactTraction evaluate_law_of_kind(const ContactLawParams& params, double norm
       history.active = true;
       ContactTraction out;
       out.normal = -k_n * normal_gap;  // > 0
-      // Coulomb threshold mu_c p_n (DESIGN.md §2).
+      // Coulomb threshold mu_c p_n (docs/method.md §Contact, Laws).
       apply_tangential_threshold(k_t, params.friction * out.normal, trial_slip, history, out);
       return out;
     }
@@ -136,7 +136,7 @@ ContactTraction evaluate_law_of_kind(const ContactLawParams& params, double norm
       }
       const double normal = -k_n * normal_gap;  // p_n = -k_n g_n, tension allowed
       if (normal < -params.adhesion) {
-        // Tension beyond sigma_c: the bond breaks (paper 001 §2.1, DESIGN.md §2).
+        // Tension beyond sigma_c: the bond breaks (paper 001 §2.2, docs/method.md §Contact).
         const double released = 0.5 * k_n * history.normal_gap * normal_gap +
                                 0.5 * k_t * history.stored_slip * trial_slip;
         ContactTraction out = open_contact(released, history);
@@ -145,7 +145,8 @@ ContactTraction evaluate_law_of_kind(const ContactLawParams& params, double norm
       }
       ContactTraction out;
       out.normal = normal;
-      // Threshold tau_c + mu_c max(p_n, 0) (DESIGN.md §2; paper 003: separate sigma, tau).
+      // Threshold tau_c + mu_c max(p_n, 0) (docs/method.md §Contact; paper 003 §2.1: separate
+      // sigma and tau).
       const double threshold = params.shear_strength + params.friction * std::max(normal, 0.0);
       apply_tangential_threshold(k_t, threshold, trial_slip, history, out);
       return out;

@@ -1,9 +1,9 @@
 #pragma once
-// Contact laws: parameters, per-contact history and a pure evaluation (STYLE.md more-habits
-// 3 and 4: `(kinematics, params, history) -> {traction, new history}`, composed from a
+// Contact laws: parameters, per-contact history and a pure evaluation (docs/architecture.md
+// §Conventions 5: `(kinematics, params, history) -> {traction, new history}`, composed from a
 // normal sub-model and a tangential sub-model, the law owning its history).
 //
-// Sign conventions (DESIGN.md §2 "Contact", the cohesive law of papers 001 §2.1 / 003 §2.1)
+// Sign conventions (docs/method.md §Contact; the cohesive law of papers 001 §2.2 / 003 §2.1)
 // ----------------------------------------------------------------------------------------
 // One contact = one slave node against the contour of a master body (node_segment.h).
 //
@@ -33,8 +33,8 @@
 //   cohesive      a bond holds the surfaces: p_n = -k_n g_n in compression and in tension,
 //                 so the contact stays active for small positive gaps (up to sigma_c / k_n);
 //                 if p_n < -sigma_c the bond breaks (p_n = p_t = 0, g_t reset); otherwise
-//                 the tangential threshold is tau_c + mu_c max(p_n, 0) (DESIGN.md: "Coulomb
-//                 friction is the same with tau_c replaced by (tau_c + mu_c p_n)"; mu_c = 0
+//                 the tangential threshold is tau_c + mu_c max(p_n, 0) (docs/method.md
+//                 §Contact, Laws: Coulomb friction added to the shear strength; mu_c = 0
 //                 gives the papers' pure cohesive law).
 // Thresholds are inclusive: exactly p_n == -sigma_c holds, exactly |p_t| == threshold sticks.
 //

@@ -1,5 +1,5 @@
 #pragma once
-// The contact stage of a time step (DESIGN.md §2 "Contact"; paper 000 §2, paper 001 §2.1):
+// The contact stage of a time step (docs/method.md §Contact; paper 000 §2, paper 001 §2.1):
 // two-pass node-to-segment penalty contact between every pair of distinct bodies.
 //
 //   1. contour positions of all bodies (deformable: MLS-evaluated boundary nodes; rigid:
@@ -18,6 +18,15 @@
 //
 // Determinism: narrow phase and laws run in parallel per candidate group into per-group
 // results; forces are scattered serially in candidate order.
+//
+// Why a class, where docs/architecture.md §Conventions 5 prefers pure functions over plain data:
+// the physics of a contact is pure and lives apart (contact_law.h, node_segment.h); what this
+// class adds is state that must stay consistent across steps (histories sorted by (slave point,
+// master body), which one merge walk per step relies on; the previous positions the slip
+// increments are measured from; the broad phase built from them) and scratch buffers reused
+// from step to step so that a step allocates nothing (§Conventions 2). Its evolving state is
+// exposed as the plain struct ContactSystemState (capture / restore), which checkpoints and
+// rollbacks copy as is.
 #include <vector>
 
 #include "contact/broad_phase.h"

@@ -5,6 +5,8 @@
 // Materials are small integer ids (0 .. count-1, indices into the scenario's material list)
 // with names for messages. Lookup is O(1) in a flat n x n slot array; names and strings are
 // only touched on the error path, so `at` may be called inside the contact loop.
+// A class rather than a plain struct: it keeps the symmetric slot array, the law list and the
+// names consistent (a pair is set once, both orders map to one law).
 #include <span>
 #include <string>
 #include <string_view>

@@ -1,13 +1,13 @@
 #pragma once
 // Narrow phase of the node-to-segment contact: where a slave node stands relative to the
-// contour of a master body. Pure geometry (STYLE.md more-habits 3): positions in, projection
-// out; no body, no state.
+// contour of a master body. Pure geometry (docs/architecture.md §Conventions 5): positions in,
+// projection out; no body, no state.
 //
 // Contours. A contour is a polyline through a body's boundary nodes with the body's material
 // on the LEFT of the direction of travel, so the outward normal of segment [a, b] is
 // n = -perp(b - a) / |b - a| and the tangent is t = perp(n) = (b - a) / |b - a|:
-//   - a closed body contour is counter-clockwise (DESIGN.md §2) and the last segment joins
-//     the last point back to the first;
+//   - a closed body contour is counter-clockwise (docs/method.md §Bodies) and the last
+//     segment joins the last point back to the first;
 //   - a periodic strip (a first body spanning the periodic cell) is closed too, but its last
 //     segment joins the last point to (first point + closing_shift), closing_shift = (±L, 0);
 //     e.g. the top surface of a lower first body runs from right to left;
@@ -33,6 +33,9 @@
 //   normal traction (which depends on the gap) does not jump.
 // The inside/outside sign of a vertex projection comes from the vertex pseudo-normal (the
 // sum of the two adjacent segment normals), which is exact for the closest vertex.
+// One narrow phase serves every pair of bodies, rigid or deformable (paper 000 §4: "the same
+// contact algorithm may then be applied for any couple of grains"), so there is no dispatch
+// table keyed by shape types.
 #include <span>
 
 #include "geometry/vec2.h"

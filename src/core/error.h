@@ -1,5 +1,5 @@
 #pragma once
-// Errors and the three tiers of checks (STYLE.md habit 10).
+// Errors and the three tiers of checks (docs/architecture.md §Conventions 7 and 8).
 //
 //   SG_VERIFY(cond, msg)   always on: user input and user-facing invariants. Throws sg::Error.
 //   SG_ASSERT(cond, msg)   programming errors; on unless NDEBUG (debug, relwithdebinfo builds).
@@ -8,6 +8,16 @@
 // `msg` is a stream expression: SG_VERIFY(nu < 0.5, "body '" << name << "': poisson " << nu).
 // Errors are raised where the context (file, key, body, node, step) is known, and printed
 // once by the top level.
+//
+// Why exceptions, where many simulation codes abort on a failed check: the engine is a library
+// that the command line, the tests and the campaign runner call, and an error must reach the
+// top level with its context and be printed once; the step controller also recovers from a
+// failed step (an inverted Gauss point, a non-finite value) by catching the sg::Error it raises
+// and rolling the state back (solver/step_controller.h). An exception escaping an OpenMP region
+// would terminate the program, so kernels that can fail return a per-item result
+// (model/internal_forces.h) or run in parallel_for (core/parallel.h), which rethrows the lowest
+// failing item's error after the loop; what a parallel loop looks up is checked before it runs
+// (MaterialPairTable::verify_covers).
 #include <sstream>
 #include <stdexcept>
 #include <string>

@@ -2,6 +2,9 @@
 // A uniform bucket grid over a fixed set of points, for neighbour queries during
 // discretization (MLS supports, k nearest neighbours). Built once per body; not used
 // in the time loop (the contact broad phase has its own structure).
+// for_each_within takes a std::function: a type-erased call per visited point, which
+// docs/architecture.md §Conventions 2 keeps out of time steps; here it runs at model build only,
+// and a template would put the grid's code into every caller.
 #include <functional>
 #include <span>
 #include <vector>

@@ -1,6 +1,7 @@
 #pragma once
 // Atomic writes: the content goes to "<path>.tmp" then is renamed over <path>, so a reader
 // (or a run killed mid-write) never sees a half-written file.
+// The writer is a std::function (called once per file, never inside a time step).
 #include <filesystem>
 #include <functional>
 #include <ostream>

@@ -1,6 +1,7 @@
 #pragma once
 // Checkpoint files: everything needed to continue a run exactly where it stopped
-// (DESIGN.md §1), in one binary file written atomically (write to "<path>.tmp", rename).
+// (docs/architecture.md §The run loop and its outputs), in one binary file written atomically
+// (write to "<path>.tmp", rename).
 //
 // Layout (little-endian, as written by the machine; a byte-swapped file is refused):
 //   magic            8 bytes  "SGCKPT\0\x1a"

@@ -1,10 +1,15 @@
 #pragma once
-// Constitutive laws of deformable grains, as values (STYLE.md: materials are values with
-// named parameters; a switch over a small enum rather than virtual dispatch in the kernel).
+// Constitutive laws of deformable grains, as values (docs/architecture.md §Conventions 4:
+// materials are values with named parameters; a switch over a small enum rather than virtual
+// dispatch in the kernel). Formulas and sources: docs/method.md §Materials, §Damping.
 //
 // Plane strain: the deformation gradient is 2x2 in the plane and F_zz = 1.
 // All stresses are per unit reference area (P, S) or current area (Cauchy), in the units of
 // the Young modulus.
+//
+// No tangent(F) beside the stress, although a material interface usually has one: the explicit
+// scheme never needs a tangent, the stable-step estimate differences the force kernel instead
+// (solver/stable_time_step.h), and the tests check P = dW/dF by central differences.
 #include <string>
 
 #include "geometry/vec2.h"
@@ -82,7 +87,7 @@ ElasticResponse elastic_response(const MaterialParams& m, const Mat2& f);
 // current tangent is lambda C^-1 (x) C^-1 + 2 (mu - lambda ln J) I_{C^-1}, which loses
 // positive definiteness as soon as ln J > mu / lambda (J > 1.01 for nu = 0.495): damping would
 // then create energy; (2) at small strain C0 is exactly what the papers' Rayleigh damping
-// alpha K0 v uses (paper 001 §2.1 quotes E "ignoring finite-strain effects on the tangent").
+// alpha K0 v uses (paper 001 §2.3 quotes E "ignoring finite-strain effects on the tangent").
 // Unlike alpha K0 v it is objective: a rigid rotation has E_dot = 0 and is never damped.
 // The dissipated power density is S_v : E_dot >= 0.
 Mat2 viscous_second_piola(const MaterialParams& m, const Mat2& strain_rate);

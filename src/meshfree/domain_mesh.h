@@ -1,6 +1,6 @@
 #pragma once
-// Field-node placement and triangulation of one body's domain (DESIGN.md §2 "Field nodes",
-// "Quadrature"): the contour points become the boundary nodes, a constrained Delaunay
+// Field-node placement and triangulation of one body's domain (docs/method.md §Quadrature and
+// lumped mass): the contour points become the boundary nodes, a constrained Delaunay
 // refinement fills the inside with nodes at about the same spacing, Lloyd smoothing evens
 // them out, and the resulting triangles carry the Gauss points.
 //

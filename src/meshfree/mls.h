@@ -9,6 +9,11 @@
 // The basis is shifted to the evaluation point and scaled by the mean support radius, which
 // keeps A well conditioned (the values are unchanged: MLS is invariant to affine changes of
 // the basis). MLS reproduces linear fields exactly; N_J(X_I) != delta_IJ (not interpolating).
+//
+// MlsShapeFunctions is a class because it holds what every evaluation of one body shares (the
+// nodes, their support radii and a neighbour grid, built once); it runs at model build only,
+// never in a time step, which streams the ShapeRows it produced (docs/architecture.md §Data
+// layout).
 #include <span>
 #include <string>
 #include <vector>

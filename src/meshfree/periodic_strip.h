@@ -1,6 +1,6 @@
 #pragma once
 // Discretization of a deformable periodic strip (a first body spanning the periodic cell in
-// x: DESIGN.md §2 "Bodies", paper 000 §3): the domain between a flat back face and a rough
+// x: docs/method.md §Bodies, paper 000 §3): the domain between a flat back face and a rough
 // contact surface over exactly one period L, with no duplicated nodes at the seam.
 //
 // Node placement (structured, no mesher): one column of nodes under (or over) every surface

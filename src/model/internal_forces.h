@@ -1,5 +1,5 @@
 #pragma once
-// Total Lagrangian internal forces of deformable bodies (DESIGN.md §2 "Finite strain"):
+// Total Lagrangian internal forces of deformable bodies (docs/method.md §Finite strain):
 //   F   = I + sum_J u_J (x) grad0 N_J          at each Gauss point
 //   F'  =     sum_J v_J (x) grad0 N_J          (rate, for the damping)
 //   P   = P_el(F) + F S_v,  S_v = alpha C0 : sym(F^T F')

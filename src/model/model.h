@@ -11,6 +11,13 @@
 // Node indices inside rows are local to their body, so a body's kernel works on pointers
 // to its own slice of the node arrays (and the same kernel runs on scratch copies, e.g. in
 // the stable-step estimate). Bodies refer to materials by index (ids, not pointers).
+//
+// On purpose, NodeState and RigidState hold fixed data (masses, inertias, drives) beside the
+// evolving state, where docs/architecture.md §Conventions 3 keeps parameters and state apart: the
+// velocity update streams m, v and f of a node together. Which arrays are state is listed once,
+// in solver/state_snapshot.h (what a checkpoint saves); the fixed ones enter the checkpoint's
+// fingerprint (io/checkpoint.h). Model's add_* functions are members because they keep the
+// global arrays (node ranges, rows, contour arrays) consistent with each other.
 #include <array>
 #include <cstdint>
 #include <string>

@@ -1,7 +1,7 @@
 #pragma once
 // `softgrain generate`: what the built sample is, measured on the Model that `run` would
-// simulate (build_model, same seed), and its files (DESIGN.md §1 "build a sample: grains,
-// first bodies, nodes, quadrature"):
+// simulate (build_model, same seed), and its files (README.md "Using it": the sample only:
+// grains, first bodies, nodes, quadrature):
 //   <run folder>/sample/sample.vtu   the bodies at t = 0 (io/vtk_writer.h)
 //   <run folder>/sample/sample.json  the measurements below (format version 1), atomic
 //   <run folder>/sample/sample.png   a picture of the sample (render/snapshot_renderer.h)

@@ -1,7 +1,7 @@
 #pragma once
-// A scenario: everything one simulation needs, as checked definitions (STYLE.md habit 7:
-// definition structs with defaults and units). The scenario layer turns TOML into these;
-// the engine never sees a file. docs/scenario.md documents every key.
+// A scenario: everything one simulation needs, as checked definitions (docs/architecture.md
+// §Conventions 6: definition structs with defaults and units). The scenario layer turns TOML into
+// these; the engine never sees a file. docs/scenario.md documents every key.
 #include <filesystem>
 #include <string>
 #include <vector>

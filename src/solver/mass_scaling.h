@@ -1,5 +1,5 @@
 #pragma once
-// Mass scaling (issue #4 "optional mass scaling, reported"; DESIGN.md §2 "Time integration").
+// Mass scaling (issue #4 "optional mass scaling, reported"; docs/method.md §Mass scaling).
 //
 // The explicit step is bounded by the highest frequency of the stiffest, lightest body. In a
 // slow (quasi-static) shear or compaction the inertia of those bodies hardly matters, so their

@@ -1,5 +1,5 @@
 #pragma once
-// Stable step of the explicit scheme (DESIGN.md §2 "Time integration").
+// Stable step of the explicit scheme (docs/method.md §Stable step).
 //
 // Symplectic Euler on a mode of frequency omega with stiffness-proportional damping
 // (xi = alpha omega / 2) is stable iff omega dt <= 2 (sqrt(1 + xi^2) - xi): write the update
@@ -45,11 +45,11 @@ struct StableStep {
 // `contact_stiffness`: the largest contact penalty k (force / length^2), 0 without contacts.
 // Contact part of a deformable body's frequency: its whole contour bonded (both passes,
 // springs 2 k l_I on each node's MLS row) against an immovable partner, by power iteration on
-// the boundary rows, never below the per-node value sqrt(2 k l_I / m_I); a rigid body's from
-// its whole contour. A contact also moves the partner: the two sides add in omega^2 (see
-// estimate_body_frequencies), so each body adds the largest contact frequency of any other
-// body that is not fully velocity-driven. All terms combine in omega^2 (springs in
-// parallel): omega^2 = omega_body^2 + omega_contact^2 + omega_partner^2.
+// the boundary rows (no floor at the per-node value sqrt(2 k l_I / m_I): see contact_frequency
+// in the .cpp); a rigid body's from its whole contour. A contact also moves the partner: the
+// two sides add in omega^2 (see estimate_body_frequencies), so each body adds the largest
+// contact frequency of any other body that is not fully velocity-driven. All terms combine in
+// omega^2 (springs in parallel): omega^2 = omega_body^2 + omega_contact^2 + omega_partner^2.
 StableStep estimate_stable_time_step(const Model& model, double safety,
                                      double contact_stiffness = 0.0);
 

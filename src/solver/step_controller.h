@@ -1,5 +1,5 @@
 #pragma once
-// Adaptive explicit step (issue #4 "Step control"; DESIGN.md §2 "Time integration").
+// Adaptive explicit step (issue #4 "Step control"; docs/method.md §Step control and rejections).
 //
 // The step is bounded by stability, not by accuracy: for the papers' parameters the critical
 // step (damping-aware, stable_time_step.h) is far below what the accuracy of the slow
@@ -49,6 +49,13 @@
 //
 // Everything is deterministic (no timing, no thread-count dependence): a run with rejections
 // repeats bitwise, and `state()` / `set_state()` carry the controller through a checkpoint.
+//
+// Why a class holding references to the solver and the contacts, and why exceptions: rejecting
+// a step needs the whole state from before it, and the controller keeps the two held snapshots
+// and its own counters together with what they were taken from. A step that fails outright
+// raises sg::Error where the fault is known (body, Gauss point, step); advance() catches it,
+// restores a held snapshot (the failed step may have left forces and velocities half updated)
+// and retries, so failure is reported once, after max_halvings retries (core/error.h).
 #include <limits>
 #include <string>
 

@@ -32,7 +32,7 @@ TEST(Material, LameParametersOfPlaneStrain) {
   const MaterialParams m = make_material_params(soft(MaterialLaw::neo_hookean));
   EXPECT_NEAR(m.mu, 10.0 / (2 * 1.495), 1e-12);
   EXPECT_NEAR(m.lambda, 10.0 * 0.495 / (1.495 * 0.01), 1e-9);
-  // DESIGN.md: c_p ~ 5.8 sqrt(E / rho) for nu = 0.495.
+  // docs/method.md §Materials: c_p ~ 5.8 sqrt(E / rho) for nu = 0.495.
   EXPECT_NEAR(p_wave_speed(m) / std::sqrt(10.0), 5.8, 0.05);
 }
 

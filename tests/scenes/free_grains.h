@@ -1,5 +1,6 @@
 #pragma once
-// Shared scenes for tests and benchmarks (STYLE.md habit 12): free deformable grains.
+// Shared scenes for tests and benchmarks (docs/architecture.md §Conventions 11): free deformable
+// grains.
 #include <string>
 
 #include "geometry/shapes.h"

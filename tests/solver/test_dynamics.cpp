@@ -180,7 +180,8 @@ TEST(StableStep, EstimateIsBelowTheWaveSpeedBoundAndSeparatesStableFromUnstable)
 }
 
 TEST(StableStep, DampingSetsTheLimitForThePapersParameters) {
-  // DESIGN.md: E = 10, rho = 1, nu = 0.495, h ~ 0.12, alpha = 0.02 gives xi ~ 3 and dt ~ 1e-3.
+  // docs/method.md §Stable step: E = 10, rho = 1, nu = 0.495, h ~ 0.12, alpha = 0.02 gives xi ~ 3
+  // and dt ~ 1e-3.
   Model model = scenes::single_disc(scenes::elastic_material(MaterialLaw::neo_hookean, 0.02, 0.495),
                                     0.5, 0.12);
   const StableStep s = estimate_stable_time_step(model, 1.0);
