@@ -18,6 +18,7 @@
 //
 // Determinism: narrow phase and laws run in parallel per candidate group into per-group
 // results; forces are scattered serially in candidate order.
+#include <span>
 #include <vector>
 
 #include "contact/broad_phase.h"
@@ -132,8 +133,30 @@ class ContactSystem {
   std::vector<ContactHistoryEntry> next_histories_;
   std::vector<BodyRotation> rotations_;  // of each body at this evaluation (kinematics.h)
   std::vector<double> rotation_moment_;  // per body: sum of its contour points' moments
+  std::vector<int> group_history_;       // per group: its entry in histories_, -1: none (scratch)
+
+  // The phases of add_contact_forces, in order.
   void update_geometry(const Model& model);
-  std::vector<int> group_history_;  // per group: its entry in histories_, -1: none (scratch)
+  void group_candidates(std::span<const ContactCandidate> candidates);
+  // Narrow phase and law of one group (parallel over groups: writes only its own slots).
+  void evaluate_group(const Model& model, std::span<const ContactCandidate> candidates,
+                      std::size_t group);
+  ContactStepResult scatter_forces(Model& model);
+
+  // The closest projection of a group's slave point on its master, and the periodic image
+  // (x shift of the slave point) it was found with.
+  struct GroupProjection {
+    NodeProjection projection;
+    double shift = 0.0;
+  };
+  GroupProjection project_group(const Model& model, std::span<const ContactCandidate> candidates,
+                                const ContactGroup& group, const Body& master_body) const;
+  // Slip increment ds of the slave point relative to the master since the last evaluation.
+  double slip_increment(const Model& model, int slave, const Body& master_body,
+                        const GroupProjection& projection) const;
+  // Adds force f, applied at `at`, to the contour point's body (rigid: force and torque;
+  // deformable: its MLS parameters).
+  void add_force_at_point(Model& model, int point, const Vec2& f, const Vec2& at);
 };
 
 }  // namespace sg
