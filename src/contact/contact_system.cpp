@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/error.h"
 #include "model/kinematics.h"
@@ -43,10 +44,49 @@ ContactSystem::ContactSystem(const Model& model, const MaterialPairTable& laws,
   for (int a = 0; a < laws.material_count(); ++a)
     for (int b = a; b < laws.material_count(); ++b)
       if (laws.has(a, b))
-        max_stiffness_ = std::max(
-            {max_stiffness_, laws.at(a, b).normal_stiffness, laws.at(a, b).tangential_stiffness});
+        max_stiffness_ =
+            std::max({max_stiffness_, laws.at(a, b).normal_stiffness,
+                      laws.at(a, b).tangential_stiffness, laws.at(a, b).bond_normal_stiffness});
   for (std::size_t k = 0; k < model.contour_point_count(); ++k)
     node_body_.push_back(model.contour_body[k]);
+  for (int a = 0; a < laws.material_count(); ++a)
+    for (int b = a; b < laws.material_count(); ++b)
+      damped_ = damped_ || (laws.has(a, b) && laws.at(a, b).damping_ratio > 0.0);
+  // The initial tributary lengths L0 (the model is built, not yet stepped or restored).
+  update_geometry(model);
+  initial_tributary_ = tributary_;
+  previous_positions_.clear();
+}
+
+void ContactSystem::update_body_masses(const Model& model) {
+  // The inertia the contact damping sees (contact_law.h): nodal masses (as scaled) of a
+  // deformable body, the mass of a rigid one, infinite for a rigid body whose translation is
+  // imposed. Read at the first evaluation: mass scaling is applied after construction.
+  body_mass_.assign(model.bodies.size(), 0.0);
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const Body& body = model.bodies[b];
+    if (body.kind == BodyKind::rigid) {
+      const auto r = static_cast<std::size_t>(body.rigid_index);
+      const RigidDrive& drive = model.rigid.drive[r];
+      const bool imposed =
+          drive.mode[0] == DriveMode::velocity || drive.mode[1] == DriveMode::velocity;
+      body_mass_[b] = imposed ? std::numeric_limits<double>::infinity() : model.rigid.mass[r];
+    } else {
+      for (int i = body.node_begin; i < body.node_end; ++i)
+        body_mass_[b] += model.nodes.mass[static_cast<std::size_t>(i)];
+    }
+  }
+}
+
+double ContactSystem::effective_mass(BodyId a, BodyId b) const {
+  if (body_mass_.empty()) return 0.0;
+  const double ma = body_mass_[static_cast<std::size_t>(a)];
+  const double mb = body_mass_[static_cast<std::size_t>(b)];
+  // Two bodies moved at imposed velocities: nothing for a damper to act on.
+  if (std::isinf(ma) && std::isinf(mb)) return 0.0;
+  if (std::isinf(ma)) return mb;
+  if (std::isinf(mb)) return ma;
+  return ma * mb / (ma + mb);
 }
 
 void ContactSystem::update_geometry(const Model& model) {
@@ -73,7 +113,12 @@ void ContactSystem::update_geometry(const Model& model) {
   }
 }
 
-ContactStepResult ContactSystem::add_contact_forces(Model& model) {
+ContactStepResult ContactSystem::add_contact_forces(Model& model, double time_step) {
+  // The run's first evaluation (no previous positions; also after a restore of the state
+  // before it): where bonded laws form their initial bonds.
+  first_evaluation_ = previous_positions_.empty();
+  time_step_ = time_step;
+  if (damped_ && body_mass_.empty()) update_body_masses(model);
   update_geometry(model);
   const BroadPhaseInput input{positions_, node_body_, segment_start_, segment_end_, segment_body_};
   if (broad_phase_.needs_rebuild(input)) broad_phase_.build(input);
@@ -232,7 +277,14 @@ void ContactSystem::evaluate_group(const Model& model, std::span<const ContactCa
   const double ds = slip_increment(model, slave, master_body, projection);
   const ContactLawParams& law = per_pass_laws_.at(
       model.bodies[static_cast<std::size_t>(slave_body)].material, master_body.material);
-  const ContactTraction tr = evaluate_contact_law(law, proj.gap, h.active ? ds : 0.0, h);
+  ContactKinematics kin;
+  kin.normal_gap = proj.gap;
+  kin.slip_increment = h.active ? ds : 0.0;
+  kin.time_step = time_step_;
+  kin.effective_mass = law.damping_ratio > 0.0 ? effective_mass(slave_body, master) : 0.0;
+  kin.initial_length = initial_tributary_[static_cast<std::size_t>(slave)];
+  kin.first_evaluation = first_evaluation_;
+  const ContactTraction tr = evaluate_contact_law(law, kin, h);
   new_history_[g] = h;
   r.slave_point = slave;
   r.slave_body = slave_body;
@@ -242,7 +294,8 @@ void ContactSystem::evaluate_group(const Model& model, std::span<const ContactCa
   r.position = positions_[static_cast<std::size_t>(slave)];
   r.normal = proj.normal;
   r.gap = proj.gap;
-  r.length = tributary_[static_cast<std::size_t>(slave)];
+  r.length = law.length == ContactLength::initial ? kin.initial_length
+                                                  : tributary_[static_cast<std::size_t>(slave)];
   r.traction = tr;
   r.active = h.active || tr.normal != 0.0 || tr.tangential != 0.0 || tr.dissipated != 0.0;
   stored_[g] = r.length * stored_energy(law, proj.gap, h);

@@ -45,7 +45,7 @@ void ExplicitSolver::step(double dt) {
   std::fill(rigid.fy.begin(), rigid.fy.end(), 0.0);
   std::fill(rigid.torque.begin(), rigid.torque.end(), 0.0);
   ContactStepResult contact;
-  if (contacts_) contact = contacts_->add_contact_forces(model_);
+  if (contacts_) contact = contacts_->add_contact_forces(model_, dt_prev);
 
   InternalForceResult internal;
   try {
