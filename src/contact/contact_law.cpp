@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/contact_law_parts.h"
 #include "core/error.h"
 
 namespace sg {
@@ -15,9 +16,76 @@ const char* contact_law_kind_name(ContactLawKind kind) {
       return "coulomb";
     case ContactLawKind::cohesive:
       return "cohesive";
+    case ContactLawKind::two_slope:
+      return "two_slope";
+    case ContactLawKind::bonded:
+      return "bonded";
+    case ContactLawKind::cohesive_zone:
+      return "cohesive_zone";
   }
   return "unknown";
 }
+
+namespace {
+
+// The coefficients only some kinds use, with whether this law's kind uses each: one given to
+// another kind is refused (a sign that the scenario means another kind).
+void validate_kind_coefficients(const ContactLawParams& p, std::string_view context) {
+  using K = ContactLawKind;
+  const char* kind = contact_law_kind_name(p.kind);
+  const bool bonded = p.kind == K::bonded, zone = p.kind == K::cohesive_zone;
+  struct Coefficient {
+    const char* name;
+    double value, unused_value;
+    bool used;
+  };
+  const Coefficient coefficients[] = {
+      {"damping_ratio", p.damping_ratio, 0.0, true},
+      {"unloading_ratio", p.unloading_ratio, 1.0, p.kind == K::two_slope},
+      {"bond_normal_stiffness", p.bond_normal_stiffness, 0.0, bonded},
+      {"bond_tensile_strength", p.bond_tensile_strength, 0.0, bonded},
+      {"bond_shear_strength", p.bond_shear_strength, 0.0, bonded},
+      {"bond_friction", p.bond_friction, 0.0, bonded},
+      {"bond_gap", p.bond_gap, 0.0, bonded || zone},
+      {"peak_traction", p.peak_traction, 0.0, zone},
+      {"critical_opening", p.critical_opening, 0.0, zone},
+      {"residual_traction", p.residual_traction, 0.0, zone},
+      {"mixed_mode_ratio", p.mixed_mode_ratio, 1.0, zone},
+  };
+  for (const Coefficient& c : coefficients) {
+    SG_VERIFY(std::isfinite(c.value), context << " (" << kind << "): " << c.name
+                                              << " must be a finite number, got " << c.value);
+    SG_VERIFY(c.used || c.value == c.unused_value, context << " (" << kind << "): " << c.name << " "
+                                                           << c.value << " given, which a " << kind
+                                                           << " law does not use");
+    SG_VERIFY(c.value >= 0.0,
+              context << " (" << kind << "): " << c.name << " must be >= 0, got " << c.value);
+  }
+  const auto require = [&](bool ok, const char* name, double value, const char* expected) {
+    SG_VERIFY(ok, context << " (" << kind << "): " << name << " " << expected << ", got " << value);
+  };
+  require(p.damping_ratio < 1.0, "damping_ratio", p.damping_ratio, "must be < 1 (underdamped)");
+  require(p.unloading_ratio > 0.0 && p.unloading_ratio <= 1.0, "unloading_ratio", p.unloading_ratio,
+          "must be in (0, 1]");
+  if (bonded)
+    require(p.bond_normal_stiffness > 0.0, "bond_normal_stiffness (k_b, force/length^2)",
+            p.bond_normal_stiffness, "must be > 0");
+  if (!zone) return;
+  require(p.friction == 0.0, "friction", p.friction, "is not used by a cohesive_zone law (0)");
+  require(p.peak_traction > 0.0, "peak_traction (P_lim, force/length)", p.peak_traction,
+          "must be > 0");
+  require(p.residual_traction <= p.peak_traction, "residual_traction (P_res, force/length)",
+          p.residual_traction, "must be <= peak_traction");
+  require(p.mixed_mode_ratio > 0.0, "mixed_mode_ratio", p.mixed_mode_ratio, "must be > 0");
+  const double elastic_limit = 0.5 * p.peak_traction / p.normal_stiffness;
+  SG_VERIFY(p.critical_opening > elastic_limit,
+            context << " (cohesive_zone): critical_opening " << p.critical_opening
+                    << " must exceed the elastic limit of a pass, peak_traction / (2"
+                       " normal_stiffness) = "
+                    << elastic_limit);
+}
+
+}  // namespace
 
 void validate(const ContactLawParams& params, std::string_view context) {
   const char* kind = contact_law_kind_name(params.kind);
@@ -51,11 +119,12 @@ void validate(const ContactLawParams& params, std::string_view context) {
               context << " (" << kind << "): tangential_stiffness (penalty k_t, force/length^2)"
                       << " must be > 0, got " << params.tangential_stiffness);
   }
-  if (params.kind != ContactLawKind::cohesive) {
+  if (params.kind != ContactLawKind::cohesive && params.kind != ContactLawKind::bonded) {
     SG_VERIFY(params.adhesion == 0.0 && params.shear_strength == 0.0,
               context << " (" << kind << "): adhesion " << params.adhesion << " / shear strength "
                       << params.shear_strength << " given; use a cohesive law for them");
   }
+  validate_kind_coefficients(params, context);
 }
 
 ContactLawParams per_pass_params(const ContactLawParams& params) {
@@ -64,10 +133,14 @@ ContactLawParams per_pass_params(const ContactLawParams& params) {
   ContactLawParams half = params;
   half.adhesion = 0.5 * params.adhesion;
   half.shear_strength = 0.5 * params.shear_strength;
+  half.bond_tensile_strength = 0.5 * params.bond_tensile_strength;
+  half.bond_shear_strength = 0.5 * params.bond_shear_strength;
+  half.peak_traction = 0.5 * params.peak_traction;
+  half.residual_traction = 0.5 * params.residual_traction;
   return half;
 }
 
-namespace {
+namespace contact_law_parts {
 
 // Sub-model: elastic stick / plastic slip of the tangential spring under `threshold`
 // (return mapping, see the header). Writes p_t, the slip flag and the dissipation.
@@ -87,6 +160,8 @@ void apply_tangential_threshold(double tangential_stiffness, double threshold, d
   out.slipping = true;
 }
 
+namespace {
+
 ContactTraction open_contact(double released_energy, ContactHistory& history) {
   history.stored_slip = 0.0;
   history.active = false;
@@ -97,10 +172,8 @@ ContactTraction open_contact(double released_energy, ContactHistory& history) {
 
 }  // namespace
 
-namespace {
-
-ContactTraction evaluate_law_of_kind(const ContactLawParams& params, double normal_gap,
-                                     double slip_increment, ContactHistory& history) {
+ContactTraction evaluate_basic_law(const ContactLawParams& params, double normal_gap,
+                                   double slip_increment, ContactHistory& history) {
   const double k_n = params.normal_stiffness;
   const double k_t = params.tangential_stiffness;
   // A contact not active at the start of the increment starts it unloaded tangentially.
@@ -151,22 +224,73 @@ ContactTraction evaluate_law_of_kind(const ContactLawParams& params, double norm
       apply_tangential_threshold(k_t, threshold, trial_slip, history, out);
       return out;
     }
+    case ContactLawKind::two_slope:
+    case ContactLawKind::bonded:
+    case ContactLawKind::cohesive_zone:
+      break;  // not basic laws (evaluate_contact_law dispatches them)
   }
   return ContactTraction{};
 }
 
+}  // namespace contact_law_parts
+
+namespace {
+
+// Work of the law's tractions over the increment less the change of its stored energy (the
+// header's "Dissipation of the damage laws").
+double work_less_stored_change(const ContactHistory& before, const ContactHistory& after,
+                               const ContactKinematics& kin, const ContactTraction& out) {
+  if (!before.active) return 0.0;  // no previous state: the onset books nothing
+  const double normal_work =
+      -0.5 * (before.normal_traction + out.normal) * (kin.normal_gap - before.normal_gap);
+  const double tangential_work =
+      -0.5 * (before.tangential_traction + out.tangential) * kin.slip_increment;
+  return normal_work + tangential_work - (after.energy - before.energy);
+}
+
 }  // namespace
+
+ContactTraction evaluate_contact_law(const ContactLawParams& params, const ContactKinematics& kin,
+                                     ContactHistory& history) {
+  using namespace contact_law_parts;
+  const ContactHistory before = history;
+  ContactTraction out;
+  // history.normal_gap is still the previous gap while the law runs (energy released).
+  switch (params.kind) {
+    case ContactLawKind::frictionless:
+    case ContactLawKind::coulomb:
+    case ContactLawKind::cohesive:
+      out = evaluate_basic_law(params, kin.normal_gap, kin.slip_increment, history);
+      break;
+    case ContactLawKind::two_slope:
+    case ContactLawKind::bonded:
+    case ContactLawKind::cohesive_zone:
+      out = params.kind == ContactLawKind::two_slope ? evaluate_two_slope(params, kin, history)
+            : params.kind == ContactLawKind::bonded  ? evaluate_bonded(params, kin, history)
+                                                     : evaluate_cohesive_zone(params, kin, history);
+      out.dissipated = work_less_stored_change(before, history, kin, out);
+      history.normal_traction = out.normal;
+      history.tangential_traction = out.tangential;
+      break;
+  }
+  if (params.damping_ratio > 0.0) add_viscous_tractions(params, kin, before, history, out);
+  history.normal_gap = kin.normal_gap;
+  return out;
+}
 
 ContactTraction evaluate_contact_law(const ContactLawParams& params, double normal_gap,
                                      double slip_increment, ContactHistory& history) {
-  // history.normal_gap is still the previous gap while the law runs (energy released).
-  const ContactTraction out = evaluate_law_of_kind(params, normal_gap, slip_increment, history);
-  history.normal_gap = normal_gap;
-  return out;
+  ContactKinematics kin;
+  kin.normal_gap = normal_gap;
+  kin.slip_increment = slip_increment;
+  return evaluate_contact_law(params, kin, history);
 }
 
 double stored_energy(const ContactLawParams& params, double normal_gap,
                      const ContactHistory& history) {
+  if (params.kind == ContactLawKind::two_slope || params.kind == ContactLawKind::bonded ||
+      params.kind == ContactLawKind::cohesive_zone)
+    return history.energy;
   if (!history.active) return 0.0;
   const double normal_part = 0.5 * params.normal_stiffness * normal_gap * normal_gap;
   const double tangential_part =
@@ -177,8 +301,50 @@ double stored_energy(const ContactLawParams& params, double normal_gap,
     case ContactLawKind::coulomb:
     case ContactLawKind::cohesive:
       return normal_part + tangential_part;
+    case ContactLawKind::two_slope:
+    case ContactLawKind::bonded:
+    case ContactLawKind::cohesive_zone:
+      return history.energy;
   }
   return 0.0;
+}
+
+double tensile_reach(const ContactLawParams& params) {
+  switch (params.kind) {
+    case ContactLawKind::frictionless:
+    case ContactLawKind::coulomb:
+    case ContactLawKind::two_slope:
+      return 0.0;
+    case ContactLawKind::cohesive:
+      return 0.5 * params.adhesion / params.normal_stiffness;
+    case ContactLawKind::bonded:
+      return std::max({0.5 * params.bond_tensile_strength / params.bond_normal_stiffness,
+                       0.5 * params.adhesion / params.normal_stiffness, params.bond_gap});
+    case ContactLawKind::cohesive_zone:
+      return std::max(params.critical_opening, params.bond_gap);
+  }
+  return 0.0;
+}
+
+std::vector<double> contact_law_coefficients(const ContactLawParams& p) {
+  return {static_cast<double>(p.kind),
+          p.normal_stiffness,
+          p.tangential_stiffness,
+          p.friction,
+          p.adhesion,
+          p.shear_strength,
+          p.damping_ratio,
+          static_cast<double>(p.length),
+          p.unloading_ratio,
+          p.bond_normal_stiffness,
+          p.bond_tensile_strength,
+          p.bond_shear_strength,
+          p.bond_friction,
+          p.bond_gap,
+          p.peak_traction,
+          p.critical_opening,
+          p.residual_traction,
+          p.mixed_mode_ratio};
 }
 
 }  // namespace sg

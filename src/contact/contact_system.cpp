@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/error.h"
 #include "model/kinematics.h"
@@ -43,10 +44,49 @@ ContactSystem::ContactSystem(const Model& model, const MaterialPairTable& laws,
   for (int a = 0; a < laws.material_count(); ++a)
     for (int b = a; b < laws.material_count(); ++b)
       if (laws.has(a, b))
-        max_stiffness_ = std::max(
-            {max_stiffness_, laws.at(a, b).normal_stiffness, laws.at(a, b).tangential_stiffness});
+        max_stiffness_ =
+            std::max({max_stiffness_, laws.at(a, b).normal_stiffness,
+                      laws.at(a, b).tangential_stiffness, laws.at(a, b).bond_normal_stiffness});
   for (std::size_t k = 0; k < model.contour_point_count(); ++k)
     node_body_.push_back(model.contour_body[k]);
+  for (int a = 0; a < laws.material_count(); ++a)
+    for (int b = a; b < laws.material_count(); ++b)
+      damped_ = damped_ || (laws.has(a, b) && laws.at(a, b).damping_ratio > 0.0);
+  // The initial tributary lengths L0 (the model is built, not yet stepped or restored).
+  update_geometry(model);
+  initial_tributary_ = tributary_;
+  previous_positions_.clear();
+}
+
+void ContactSystem::update_body_masses(const Model& model) {
+  // The inertia the contact damping sees (contact_law.h): nodal masses (as scaled) of a
+  // deformable body, the mass of a rigid one, infinite for a rigid body whose translation is
+  // imposed. Read at the first evaluation: mass scaling is applied after construction.
+  body_mass_.assign(model.bodies.size(), 0.0);
+  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
+    const Body& body = model.bodies[b];
+    if (body.kind == BodyKind::rigid) {
+      const auto r = static_cast<std::size_t>(body.rigid_index);
+      const RigidDrive& drive = model.rigid.drive[r];
+      const bool imposed =
+          drive.mode[0] == DriveMode::velocity || drive.mode[1] == DriveMode::velocity;
+      body_mass_[b] = imposed ? std::numeric_limits<double>::infinity() : model.rigid.mass[r];
+    } else {
+      for (int i = body.node_begin; i < body.node_end; ++i)
+        body_mass_[b] += model.nodes.mass[static_cast<std::size_t>(i)];
+    }
+  }
+}
+
+double ContactSystem::effective_mass(BodyId a, BodyId b) const {
+  if (body_mass_.empty()) return 0.0;
+  const double ma = body_mass_[static_cast<std::size_t>(a)];
+  const double mb = body_mass_[static_cast<std::size_t>(b)];
+  // Two bodies moved at imposed velocities: nothing for a damper to act on.
+  if (std::isinf(ma) && std::isinf(mb)) return 0.0;
+  if (std::isinf(ma)) return mb;
+  if (std::isinf(mb)) return ma;
+  return ma * mb / (ma + mb);
 }
 
 void ContactSystem::update_geometry(const Model& model) {
@@ -73,26 +113,48 @@ void ContactSystem::update_geometry(const Model& model) {
   }
 }
 
-ContactStepResult ContactSystem::add_contact_forces(Model& model) {
+ContactStepResult ContactSystem::add_contact_forces(Model& model, double time_step) {
+  // The run's first evaluation (no previous positions; also after a restore of the state
+  // before it): where bonded laws form their initial bonds.
+  first_evaluation_ = previous_positions_.empty();
+  time_step_ = time_step;
+  if (damped_ && body_mass_.empty()) update_body_masses(model);
   update_geometry(model);
   const BroadPhaseInput input{positions_, node_body_, segment_start_, segment_end_, segment_body_};
   if (broad_phase_.needs_rebuild(input)) broad_phase_.build(input);
   const std::span<const ContactCandidate> candidates = broad_phase_.candidates();
+  group_candidates(candidates);
 
+  // Scratch arrays are members reused from step to step: no allocation in the step once
+  // their capacity has grown. Not cleared: evaluate_group writes every group's result
+  // (r.active at least) and history, and its stored energy whenever the scatter reads it
+  // (r.active). Clearing them rewrote 160 bytes per group each step (46 MB on 10,000 grains,
+  // far beyond the cache).
+  results_.resize(groups_.size());
+  new_history_.resize(groups_.size());
+  stored_.resize(groups_.size());
+  const int group_count = static_cast<int>(groups_.size());
+#pragma omp parallel for schedule(static)
+  for (int g = 0; g < group_count; ++g)
+    evaluate_group(model, candidates, static_cast<std::size_t>(g));
+
+  const ContactStepResult result = scatter_forces(model);
+  // A swap, not a copy: positions_ is recomputed in full at the next evaluation.
+  previous_positions_.swap(positions_);
+  return result;
+}
+
+void ContactSystem::group_candidates(std::span<const ContactCandidate> candidates) {
   // Group candidates by (slave point, master body): contiguous, since candidates are sorted
   // by (node, segment) and a body's segments are contiguous.
-  // Scratch arrays are members reused from step to step: no allocation in the step once
-  // their capacity has grown.
-  std::vector<ContactGroup>& groups = groups_;
-  groups.clear();
+  groups_.clear();
   // Each group's previous history (index into histories_, -1: none). The groups come in
   // increasing (slave point, master body) order (a body's segments are contiguous and
-  // numbered in body order), and so do the histories (written by the scatter below in group
+  // numbered in body order), and so do the histories (written by the scatter in group
   // order): one merge walk finds them all, O(1) per group. A binary search per group cost
   // O(log n) (bench_contacts: ~60 more instructions per boundary node on 10,000 grains than
   // on 100).
-  std::vector<int>& group_history = group_history_;
-  group_history.clear();
+  group_history_.clear();
   std::size_t cursor = 0;
   for (std::size_t i = 0; i < candidates.size();) {
     std::size_t j = i + 1;
@@ -100,7 +162,7 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model) {
     while (j < candidates.size() && candidates[j].node == candidates[i].node &&
            segment_body_[static_cast<std::size_t>(candidates[j].segment)] == body)
       ++j;
-    groups.push_back({i, j});
+    groups_.push_back({i, j});
     const int slave = candidates[i].node;
     while (cursor < histories_.size() &&
            std::make_pair(histories_[cursor].slave_point, histories_[cursor].master_body) <
@@ -108,7 +170,7 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model) {
       ++cursor;
     const bool found = cursor < histories_.size() && histories_[cursor].slave_point == slave &&
                        histories_[cursor].master_body == body;
-    group_history.push_back(found ? static_cast<int>(cursor) : -1);
+    group_history_.push_back(found ? static_cast<int>(cursor) : -1);
     i = j;
   }
   SG_VALIDATE(std::is_sorted(histories_.begin(), histories_.end(),
@@ -117,144 +179,157 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model) {
                                       std::make_pair(b.slave_point, b.master_body);
                              }),
               "contact histories are not sorted by (slave point, master body)");
+}
 
-  std::vector<ContactRecord>& results = results_;
-  std::vector<ContactHistory>& new_history = new_history_;
-  std::vector<double>& stored = stored_;
-  // Not cleared: the loop below writes every group's result (r.active at least) and history,
-  // and its stored energy whenever the scatter reads it (r.active). Clearing them rewrote
-  // 160 bytes per group each step (46 MB on 10,000 grains, far beyond the cache).
-  results.resize(groups.size());
-  new_history.resize(groups.size());
-  stored.resize(groups.size());
-  const int group_count = static_cast<int>(groups.size());
+ContactSystem::GroupProjection ContactSystem::project_group(
+    const Model& model, std::span<const ContactCandidate> candidates, const ContactGroup& group,
+    const Body& master_body) const {
+  // Nearest periodic image of the node relative to EACH candidate segment, recomputed from
+  // current positions (the broad-phase shift is from build time). One shift per group is
+  // not enough: a first body spans the whole period, so a node near the seam can have
+  // candidates at both ends of the strip (the closing segment near x_min and segment 0
+  // near x_max), each needing its own image; projecting with the first segment's shift
+  // put the node on the far end and reported a deep false penetration at the corner.
+  const Vec2 unshifted = positions_[static_cast<std::size_t>(candidates[group.begin].node)];
+  const ContourView view = contour_view(master_body, positions_);
+  GroupProjection best;
+  for (std::size_t c = group.begin; c < group.end; ++c) {
+    const auto segment = static_cast<std::size_t>(candidates[c].segment);
+    const double candidate_shift =
+        model.periodic_x ? nearest_image_shift(broad_phase_.params(), unshifted,
+                                               segment_start_[segment], segment_end_[segment])
+                         : 0.0;
+    const NodeProjection p =
+        project_on_contour_segment(unshifted + Vec2(candidate_shift, 0.0), view,
+                                   candidates[c].segment - master_body.contour_begin);
+    if (is_closer(p, best.projection)) {
+      best.projection = p;
+      best.shift = candidate_shift;
+    }
+  }
+  return best;
+}
+
+double ContactSystem::slip_increment(const Model& model, int slave, const Body& master_body,
+                                     const GroupProjection& projection) const {
+  const NodeProjection& proj = projection.projection;
   const double period = model.x_max - model.x_min;
-#pragma omp parallel for schedule(static)
-  for (int g = 0; g < group_count; ++g) {
-    const ContactGroup& group = groups[static_cast<std::size_t>(g)];
-    const ContactCandidate& first = candidates[group.begin];
-    const int slave = first.node;
-    const BodyId master = segment_body_[static_cast<std::size_t>(first.segment)];
-    const Body& master_body = model.bodies[static_cast<std::size_t>(master)];
-    const BodyId slave_body = node_body_[static_cast<std::size_t>(slave)];
-    // Nearest periodic image of the node relative to EACH candidate segment, recomputed from
-    // current positions (the broad-phase shift is from build time). One shift per group is
-    // not enough: a first body spans the whole period, so a node near the seam can have
-    // candidates at both ends of the strip (the closing segment near x_min and segment 0
-    // near x_max), each needing its own image; projecting with the first segment's shift
-    // put the node on the far end and reported a deep false penetration at the corner.
-    const Vec2 unshifted = positions_[static_cast<std::size_t>(slave)];
-    const ContourView view = contour_view(master_body, positions_);
-    NodeProjection proj;
-    double shift = 0.0;
-    for (std::size_t c = group.begin; c < group.end; ++c) {
-      const auto segment = static_cast<std::size_t>(candidates[c].segment);
-      const double candidate_shift =
-          model.periodic_x ? nearest_image_shift(broad_phase_.params(), unshifted,
-                                                 segment_start_[segment], segment_end_[segment])
-                           : 0.0;
-      const NodeProjection p =
-          project_on_contour_segment(unshifted + Vec2(candidate_shift, 0.0), view,
-                                     candidates[c].segment - master_body.contour_begin);
-      if (is_closer(p, proj)) {
-        proj = p;
-        shift = candidate_shift;
-      }
-    }
-    const Vec2 node = unshifted + Vec2(shift, 0.0);
-    ContactRecord& r = results[static_cast<std::size_t>(g)];
-    const int previous = group_history[static_cast<std::size_t>(g)];
-    ContactHistory h =
-        previous >= 0 ? histories_[static_cast<std::size_t>(previous)].history : ContactHistory{};
-    if (proj.segment < 0 || (proj.gap >= settings_.cutoff && !h.active)) {
-      r.active = false;
-      new_history[static_cast<std::size_t>(g)] = ContactHistory{};
-      continue;
-    }
-    const int seg = master_body.contour_begin + proj.segment;
-    // Slip increment: relative tangential motion of the node and its projection since the
-    // previous evaluation (previous positions shifted by the same image).
-    const ContourView old_view = contour_view(master_body, previous_positions_);
-    Vec2 node_old = previous_positions_[static_cast<std::size_t>(slave)];
-    node_old.x() += shift;
-    // If the node or the body wrapped across the seam between evaluations, the displacement
-    // is taken modulo the period.
-    if (model.periodic_x) {
-      const double dx = (node.x() - node_old.x());
-      node_old.x() += period * std::round(dx / period);
-    }
-    // The master may have wrapped across the seam too: bring its old segment next to the new one.
-    Vec2 old_start = old_view.segment_start(proj.segment),
-         old_end = old_view.segment_end(proj.segment);
-    if (model.periodic_x) {
-      const double wrap =
-          period * std::round((view.segment_start(proj.segment).x() - old_start.x()) / period);
-      old_start.x() += wrap;
-      old_end.x() += wrap;
-    }
-    // On the interior of a segment the slip is measured along the segment (ds = 0 for any
-    // rigid motion of node and segment together). When the closest point is a vertex, the
-    // normal is the direction from the vertex to the node and the tangential force acts along
-    // perp(normal), which is not the tangent of either adjacent segment; measuring the slip
-    // along the segment then made the tangential spring non-conservative, and at two corners
-    // that coincide (a block bonded to a grip of the same width) the projection alternates
-    // between the two segments of the vertex, each time reinterpreting the stored slip along
-    // the other segment. Bonded blocks measured: the grips' corner springs slid at their
-    // threshold ~100 times per time unit, ledger residual -1e-3 (energy created), interface
-    // noise as large as the mean traction. At a vertex the slip is therefore the relative
-    // motion of the node and the vertex along the contact's own tangent, which is the same
-    // whichever segment of the vertex was picked.
-    double ds = 0.0;
-    if (proj.t > 0.0 && proj.t < 1.0) {
-      ds = tangential_slip_increment(node_old, old_start, old_end, node,
+  const ContourView view = contour_view(master_body, positions_);
+  const Vec2 node = positions_[static_cast<std::size_t>(slave)] + Vec2(projection.shift, 0.0);
+  // Slip increment: relative tangential motion of the node and its projection since the
+  // previous evaluation (previous positions shifted by the same image).
+  const ContourView old_view = contour_view(master_body, previous_positions_);
+  Vec2 node_old = previous_positions_[static_cast<std::size_t>(slave)];
+  node_old.x() += projection.shift;
+  // If the node or the body wrapped across the seam between evaluations, the displacement
+  // is taken modulo the period.
+  if (model.periodic_x) {
+    const double dx = (node.x() - node_old.x());
+    node_old.x() += period * std::round(dx / period);
+  }
+  // The master may have wrapped across the seam too: bring its old segment next to the new one.
+  Vec2 old_start = old_view.segment_start(proj.segment),
+       old_end = old_view.segment_end(proj.segment);
+  if (model.periodic_x) {
+    const double wrap =
+        period * std::round((view.segment_start(proj.segment).x() - old_start.x()) / period);
+    old_start.x() += wrap;
+    old_end.x() += wrap;
+  }
+  // On the interior of a segment the slip is measured along the segment (ds = 0 for any
+  // rigid motion of node and segment together). When the closest point is a vertex, the
+  // normal is the direction from the vertex to the node and the tangential force acts along
+  // perp(normal), which is not the tangent of either adjacent segment; measuring the slip
+  // along the segment then made the tangential spring non-conservative, and at two corners
+  // that coincide (a block bonded to a grip of the same width) the projection alternates
+  // between the two segments of the vertex, each time reinterpreting the stored slip along
+  // the other segment. Bonded blocks measured: the grips' corner springs slid at their
+  // threshold ~100 times per time unit, ledger residual -1e-3 (energy created), interface
+  // noise as large as the mean traction. At a vertex the slip is therefore the relative
+  // motion of the node and the vertex along the contact's own tangent, which is the same
+  // whichever segment of the vertex was picked.
+  if (proj.t > 0.0 && proj.t < 1.0)
+    return tangential_slip_increment(node_old, old_start, old_end, node,
                                      view.segment_start(proj.segment),
                                      view.segment_end(proj.segment), proj.t);
-    } else {
-      const Vec2 vertex_old = proj.t >= 1.0 ? old_end : old_start;
-      ds = proj.tangent.dot((node - node_old) - (proj.point - vertex_old));
-    }
-    const ContactLawParams& law = per_pass_laws_.at(
-        model.bodies[static_cast<std::size_t>(slave_body)].material, master_body.material);
-    const ContactTraction tr = evaluate_contact_law(law, proj.gap, h.active ? ds : 0.0, h);
-    new_history[static_cast<std::size_t>(g)] = h;
-    r.slave_point = slave;
-    r.slave_body = slave_body;
-    r.master_body = master;
-    r.master_segment = seg;
-    r.t = proj.t;
-    r.position = positions_[static_cast<std::size_t>(slave)];
-    r.normal = proj.normal;
-    r.gap = proj.gap;
-    r.length = tributary_[static_cast<std::size_t>(slave)];
-    r.traction = tr;
-    r.active = h.active || tr.normal != 0.0 || tr.tangential != 0.0 || tr.dissipated != 0.0;
-    stored[static_cast<std::size_t>(g)] = r.length * stored_energy(law, proj.gap, h);
-  }
+  const Vec2 vertex_old = proj.t >= 1.0 ? old_end : old_start;
+  return proj.tangent.dot((node - node_old) - (proj.point - vertex_old));
+}
 
+void ContactSystem::evaluate_group(const Model& model, std::span<const ContactCandidate> candidates,
+                                   std::size_t g) {
+  const ContactGroup& group = groups_[g];
+  const int slave = candidates[group.begin].node;
+  const BodyId master = segment_body_[static_cast<std::size_t>(candidates[group.begin].segment)];
+  const Body& master_body = model.bodies[static_cast<std::size_t>(master)];
+  const BodyId slave_body = node_body_[static_cast<std::size_t>(slave)];
+  const GroupProjection projection = project_group(model, candidates, group, master_body);
+  const NodeProjection& proj = projection.projection;
+  ContactRecord& r = results_[g];
+  const int previous = group_history_[g];
+  ContactHistory h =
+      previous >= 0 ? histories_[static_cast<std::size_t>(previous)].history : ContactHistory{};
+  if (proj.segment < 0 || (proj.gap >= settings_.cutoff && !h.active)) {
+    r.active = false;
+    new_history_[g] = ContactHistory{};
+    return;
+  }
+  const double ds = slip_increment(model, slave, master_body, projection);
+  const ContactLawParams& law = per_pass_laws_.at(
+      model.bodies[static_cast<std::size_t>(slave_body)].material, master_body.material);
+  ContactKinematics kin;
+  kin.normal_gap = proj.gap;
+  kin.slip_increment = h.active ? ds : 0.0;
+  kin.time_step = time_step_;
+  kin.effective_mass = law.damping_ratio > 0.0 ? effective_mass(slave_body, master) : 0.0;
+  kin.initial_length = initial_tributary_[static_cast<std::size_t>(slave)];
+  kin.first_evaluation = first_evaluation_;
+  const ContactTraction tr = evaluate_contact_law(law, kin, h);
+  new_history_[g] = h;
+  r.slave_point = slave;
+  r.slave_body = slave_body;
+  r.master_body = master;
+  r.master_segment = master_body.contour_begin + proj.segment;
+  r.t = proj.t;
+  r.position = positions_[static_cast<std::size_t>(slave)];
+  r.normal = proj.normal;
+  r.gap = proj.gap;
+  r.length = law.length == ContactLength::initial ? kin.initial_length
+                                                  : tributary_[static_cast<std::size_t>(slave)];
+  r.traction = tr;
+  r.active = h.active || tr.normal != 0.0 || tr.tangential != 0.0 || tr.dissipated != 0.0;
+  stored_[g] = r.length * stored_energy(law, proj.gap, h);
+}
+
+void ContactSystem::add_force_at_point(Model& model, int point, const Vec2& f, const Vec2& at) {
+  const BodyId b = node_body_[static_cast<std::size_t>(point)];
+  const Body& body = model.bodies[static_cast<std::size_t>(b)];
+  if (body.kind == BodyKind::rigid) {
+    const auto r = static_cast<std::size_t>(body.rigid_index);
+    model.rigid.fx[r] += f.x();
+    model.rigid.fy[r] += f.y();
+    Vec2 arm = at - Vec2(model.rigid.x[r], model.rigid.y[r]);
+    if (model.periodic_x) {
+      const double period = model.x_max - model.x_min;
+      arm.x() -= period * std::round(arm.x() / period);
+    }
+    model.rigid.torque[r] += cross(arm, f);
+  } else {
+    rotation_moment_[static_cast<std::size_t>(b)] +=
+        add_contour_node_force(model, body, body.node_begin + (point - body.contour_begin), f,
+                               rotations_[static_cast<std::size_t>(b)]);
+  }
+}
+
+ContactStepResult ContactSystem::scatter_forces(Model& model) {
   // Serial scatter in candidate order: deterministic whatever the thread count.
   ContactStepResult result;
   std::vector<ContactHistoryEntry>& next = next_histories_;
   next.clear();
   records_.clear();
   rotation_moment_.assign(model.bodies.size(), 0.0);
-  auto add_force_at_point = [&](int point, const Vec2& f, const Vec2& at) {
-    const BodyId b = node_body_[static_cast<std::size_t>(point)];
-    const Body& body = model.bodies[static_cast<std::size_t>(b)];
-    if (body.kind == BodyKind::rigid) {
-      const auto r = static_cast<std::size_t>(body.rigid_index);
-      model.rigid.fx[r] += f.x();
-      model.rigid.fy[r] += f.y();
-      Vec2 arm = at - Vec2(model.rigid.x[r], model.rigid.y[r]);
-      if (model.periodic_x) arm.x() -= period * std::round(arm.x() / period);
-      model.rigid.torque[r] += cross(arm, f);
-    } else {
-      rotation_moment_[static_cast<std::size_t>(b)] +=
-          add_contour_node_force(model, body, body.node_begin + (point - body.contour_begin), f,
-                                 rotations_[static_cast<std::size_t>(b)]);
-    }
-  };
-  for (std::size_t g = 0; g < groups.size(); ++g) {
-    const ContactRecord& r = results[g];
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    const ContactRecord& r = results_[g];
     if (!r.active) continue;
     const Vec2 tangent = perp(r.normal);
     const Vec2 f = r.length * (r.traction.normal * r.normal + r.traction.tangential * tangent);
@@ -262,22 +337,21 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model) {
     const int local = r.master_segment - master.contour_begin;
     const int a = r.master_segment;
     const int b = master.contour_begin + (local + 1) % master.contour_count();
-    add_force_at_point(r.slave_point, f, positions_[static_cast<std::size_t>(r.slave_point)]);
-    add_force_at_point(a, -(1.0 - r.t) * f, segment_start_[static_cast<std::size_t>(a)]);
-    add_force_at_point(b, -r.t * f, segment_end_[static_cast<std::size_t>(a)]);
+    add_force_at_point(model, r.slave_point, f,
+                       positions_[static_cast<std::size_t>(r.slave_point)]);
+    add_force_at_point(model, a, -(1.0 - r.t) * f, segment_start_[static_cast<std::size_t>(a)]);
+    add_force_at_point(model, b, -r.t * f, segment_end_[static_cast<std::size_t>(a)]);
     result.dissipated += r.length * r.traction.dissipated;
-    result.stored_energy += stored[g];
+    result.stored_energy += stored_[g];
     ++result.active_contacts;
     records_.push_back(r);
-    if (new_history[g].active || new_history[g].stored_slip != 0.0)
-      next.push_back({r.slave_point, r.master_body, new_history[g]});
+    if (new_history_[g].active || new_history_[g].stored_slip != 0.0)
+      next.push_back({r.slave_point, r.master_body, new_history_[g]});
   }
   // The moments of the contour points' hat offsets, spread once per body (kinematics.h).
   for (std::size_t b = 0; b < model.bodies.size(); ++b)
     add_body_rotation_moment(model, model.bodies[b], rotation_moment_[b], rotations_[b]);
   histories_.swap(next);
-  // A swap, not a copy: positions_ is recomputed in full at the next evaluation.
-  previous_positions_.swap(positions_);
   return result;
 }
 

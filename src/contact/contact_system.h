@@ -9,8 +9,11 @@
 //   3. narrow phase per (slave contour point, master body): closest segment of the master
 //      among the candidates, signed gap, slip increment since the last evaluation;
 //   4. law (per material pair, strengths halved for each pass) with the history of that
-//      (slave point, master body) contact;
-//   5. force f = l (p_n n + p_t t) on the slave point (l its current tributary length), -f on
+//      (slave point, master body) contact, the time since the previous evaluation, the two
+//      bodies' effective mass and the point's initial tributary length (contact damping), and
+//      whether this is the run's first evaluation (where bonded laws form their bonds);
+//   5. force f = l (p_n n + p_t t) on the slave point (l its current tributary length, or
+//      its initial one for a law with length = initial), -f on
 //      the master segment's end points with weights (1 - s, s): action equals reaction;
 //      forces on a deformable body's contour point are spread to the MLS parameters with the
 //      transpose of its position's derivative (its contact-consistent row, model/kinematics.h
@@ -27,6 +30,7 @@
 // from step to step so that a step allocates nothing (§Conventions 2). Its evolving state is
 // exposed as the plain struct ContactSystemState (capture / restore), which checkpoints and
 // rollbacks copy as is.
+#include <span>
 #include <vector>
 
 #include "contact/broad_phase.h"
@@ -89,8 +93,9 @@ class ContactSystem {
   ContactSystem(const Model& model, const MaterialPairTable& laws, const ContactSettings& settings);
 
   // Evaluates all contacts at the model's current state and adds their forces to the node
-  // forces (fx, fy) and rigid forces (fx, fy, torque). Call once per step.
-  ContactStepResult add_contact_forces(Model& model);
+  // forces (fx, fy) and rigid forces (fx, fy, torque). Call once per step; `time_step` is the
+  // time since the previous evaluation (the rates of contact damping; 0: none).
+  ContactStepResult add_contact_forces(Model& model, double time_step = 0.0);
 
   const std::vector<ContactRecord>& records() const { return records_; }
   const std::vector<ContactHistoryEntry>& histories() const { return histories_; }
@@ -141,8 +146,40 @@ class ContactSystem {
   std::vector<ContactHistoryEntry> next_histories_;
   std::vector<BodyRotation> rotations_;  // of each body at this evaluation (kinematics.h)
   std::vector<double> rotation_moment_;  // per body: sum of its contour points' moments
+  std::vector<int> group_history_;       // per group: its entry in histories_, -1: none (scratch)
+  // Contact damping and bond formation (contact_law.h): the initial tributary length L0 of
+  // each contour point, each body's mass (filled at the first evaluation when a law is
+  // damped), and this evaluation's time step and whether it is the run's first.
+  std::vector<double> initial_tributary_;
+  std::vector<double> body_mass_;
+  bool damped_ = false;
+  bool first_evaluation_ = false;
+  double time_step_ = 0.0;
+  void update_body_masses(const Model& model);
+  double effective_mass(BodyId a, BodyId b) const;
+
+  // The phases of add_contact_forces, in order.
   void update_geometry(const Model& model);
-  std::vector<int> group_history_;  // per group: its entry in histories_, -1: none (scratch)
+  void group_candidates(std::span<const ContactCandidate> candidates);
+  // Narrow phase and law of one group (parallel over groups: writes only its own slots).
+  void evaluate_group(const Model& model, std::span<const ContactCandidate> candidates,
+                      std::size_t group);
+  ContactStepResult scatter_forces(Model& model);
+
+  // The closest projection of a group's slave point on its master, and the periodic image
+  // (x shift of the slave point) it was found with.
+  struct GroupProjection {
+    NodeProjection projection;
+    double shift = 0.0;
+  };
+  GroupProjection project_group(const Model& model, std::span<const ContactCandidate> candidates,
+                                const ContactGroup& group, const Body& master_body) const;
+  // Slip increment ds of the slave point relative to the master since the last evaluation.
+  double slip_increment(const Model& model, int slave, const Body& master_body,
+                        const GroupProjection& projection) const;
+  // Adds force f, applied at `at`, to the contour point's body (rigid: force and torque;
+  // deformable: its MLS parameters).
+  void add_force_at_point(Model& model, int point, const Vec2& f, const Vec2& at);
 };
 
 }  // namespace sg

@@ -207,12 +207,20 @@ void describe(A& a, S& c) requires std::is_same_v<std::remove_const_t<S>, StepCo
 
 template <class A, class S>
 void describe(A& a, S& h) requires std::is_same_v<std::remove_const_t<S>, ContactHistoryEntry> {
-  static_assert(sizeof(ContactHistory) == 24, "ContactHistory changed: update the checkpoint");
+  static_assert(sizeof(ContactHistory) == 72, "ContactHistory changed: update the checkpoint");
   a(h.slave_point);
   a(h.master_body);
   a(h.history.stored_slip);
   a(h.history.normal_gap);
+  a(h.history.normal_traction);
+  a(h.history.tangential_traction);
+  a(h.history.energy);
+  a(h.history.viscous_normal);
+  a(h.history.viscous_tangential);
+  a(h.history.damage);
   a(h.history.active);
+  a(h.history.intact);
+  a(h.history.unloading);
 }
 
 template <class A, class S>

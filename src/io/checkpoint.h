@@ -32,7 +32,9 @@ namespace sg {
 // 6: node drives' servo loads (NodeDrive::load, load_damping) enter the model hash.
 // 7: the solver's previous step (SolverState::previous_dt) and the ledger's step_change
 //    (variable-step central difference, solver/explicit_solver.h).
-inline constexpr std::uint32_t kCheckpointFormatVersion = 7;
+// 8: contact histories carry the damage laws' and contact damping's state (previous
+//    tractions, stored energy, viscous tractions, damage, intact / unloading flags).
+inline constexpr std::uint32_t kCheckpointFormatVersion = 8;
 
 // What identifies the scenario a checkpoint belongs to. The counts make the common mistake
 // explicit in the message; the hashes catch the rest.

@@ -55,9 +55,8 @@ std::vector<double> run_settings(const ScenarioDef& s, double first_dt) {
     const ContactSettings c = contact_settings(s);
     v.insert(v.end(), {c.cutoff, c.skin});
     for (const ContactLawDef& law : s.contact_laws) {
-      const ContactLawParams& p = law.params;
-      v.insert(v.end(), {static_cast<double>(p.kind), p.normal_stiffness, p.tangential_stiffness,
-                         p.friction, p.adhesion, p.shear_strength});
+      const std::vector<double> coefficients = contact_law_coefficients(law.params);
+      v.insert(v.end(), coefficients.begin(), coefficients.end());
     }
   }
   return v;

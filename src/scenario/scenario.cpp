@@ -73,34 +73,6 @@ WallDef read_wall(const TomlReader& t, std::size_t index) {
   return w;
 }
 
-ContactLawDef read_contact_law(const TomlReader& t) {
-  t.reject_unknown_keys({"materials", "law", "normal_stiffness", "tangential_stiffness", "friction",
-                         "adhesion", "shear_strength", "cohesion"});
-  ContactLawDef d;
-  const auto pair = t.string_pair("materials");
-  d.material_a = pair.first;
-  d.material_b = pair.second;
-  const std::string law = t.one_of("law", {"frictionless", "coulomb", "cohesive"}, "frictionless");
-  d.params.kind = law == "frictionless" ? ContactLawKind::frictionless
-                  : law == "coulomb"    ? ContactLawKind::coulomb
-                                        : ContactLawKind::cohesive;
-  d.params.normal_stiffness = t.positive("normal_stiffness");
-  if (d.params.kind != ContactLawKind::frictionless)
-    d.params.tangential_stiffness = t.positive("tangential_stiffness", d.params.normal_stiffness);
-  d.params.friction = t.non_negative("friction", 0.0);
-  // cohesion = c sets sigma_c = tau_c = c (the papers' single parameter).
-  const double cohesion = t.non_negative("cohesion", 0.0);
-  d.params.adhesion = t.non_negative("adhesion", cohesion);
-  d.params.shear_strength = t.non_negative("shear_strength", cohesion);
-  try {
-    validate(d.params,
-             "contact law for materials '" + d.material_a + "' and '" + d.material_b + "'");
-  } catch (const Error& e) {
-    t.fail("law", e.what());
-  }
-  return d;
-}
-
 // A size range [min, max] (length), 0 < min <= max.
 SizeRangeDef read_size_range(const TomlReader& t, const char* key) {
   const Vec2 r = t.vec2(key);
@@ -285,15 +257,17 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
          {&s.contact_laws.back().material_a, &s.contact_laws.back().material_b})
       if (!material_names.count(*m)) t.fail("materials", "unknown material '" + *m + "'");
     const ContactLawParams& p = s.contact_laws.back().params;
-    cohesive_reach = std::max(cohesive_reach, 0.5 * p.adhesion / p.normal_stiffness);
+    cohesive_reach = std::max(cohesive_reach, tensile_reach(p));
   }
   if (auto t = root.table("contact")) {
     t->reject_unknown_keys({"cutoff", "skin"});
     s.contact_cutoff = t->non_negative("cutoff", 0.0);
     s.contact_skin = t->non_negative("skin", 0.0);
     if (s.contact_cutoff > 0.0 && s.contact_cutoff < cohesive_reach)
-      t->fail("cutoff", "must be at least the cohesive reach sigma_c / (2 k_n) = " +
-                            std::to_string(cohesive_reach));
+      t->fail(
+          "cutoff",
+          "must be at least the reach of the tensile laws (sigma_c / (2 k_n), g_lim, bond_gap) = " +
+              std::to_string(cohesive_reach));
   }
   if (s.contact_cutoff == 0.0)
     s.contact_cutoff = std::max(0.25 * s.discretization.mesh.spacing, 1.5 * cohesive_reach);

@@ -11,6 +11,7 @@
 #include "meshfree/body_discretization.h"
 #include "model/model.h"
 #include "scenario/compaction_box.h"
+#include "scenario/contact_law_def.h"
 #include "scenario/shear_cell.h"
 
 #include <optional>
@@ -39,11 +40,6 @@ struct WallDef {
   Vec2 lower_left = Vec2::Zero(), upper_right = Vec2::Zero();  // length
   std::string material;
   Vec2 velocity = Vec2::Zero();  // imposed velocity (length / time); rotation is held
-};
-
-struct ContactLawDef {
-  std::string material_a, material_b;
-  ContactLawParams params;
 };
 
 struct ScenarioDef {

@@ -31,7 +31,7 @@ void ExplicitSolver::step(double dt) {
   const StepSizes steps = step_sizes(dt);
   apply_external_forces();
   timer.stamp(StepPhase::external_forces);
-  const ContactStepResult contact = compute_contact_forces();
+  const ContactStepResult contact = compute_contact_forces(steps.previous);
   timer.stamp(StepPhase::contacts);
   const InternalForceResult internal = compute_internal_forces();
   timer.stamp(StepPhase::internal_forces);
@@ -80,8 +80,9 @@ void ExplicitSolver::apply_external_forces() {
   std::fill(rigid.torque.begin(), rigid.torque.end(), 0.0);
 }
 
-ContactStepResult ExplicitSolver::compute_contact_forces() {
-  return contacts_ ? contacts_->add_contact_forces(model_) : ContactStepResult{};
+ContactStepResult ExplicitSolver::compute_contact_forces(double dt_prev) {
+  // The step that led to u_n: contact damping turns the slip and gap increments into rates.
+  return contacts_ ? contacts_->add_contact_forces(model_, dt_prev) : ContactStepResult{};
 }
 
 InternalForceResult ExplicitSolver::compute_internal_forces() {

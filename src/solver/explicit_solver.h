@@ -181,7 +181,7 @@ class ExplicitSolver {
   // The phases of step(), in order (solver/explicit_solver.cpp).
   StepSizes step_sizes(double dt) const;
   void apply_external_forces();
-  ContactStepResult compute_contact_forces();
+  ContactStepResult compute_contact_forces(double dt_prev);
   InternalForceResult compute_internal_forces();
   NodeUpdate update_node_velocities(const StepSizes& steps);  // solver/node_update.cpp
   // From the node carriers' servo power (summed on, so the sums keep their order).

@@ -37,7 +37,10 @@ ContactLawParams coulomb_law(double friction) {
 
 // A bond that holds, last evaluated at `previous_gap`.
 ContactHistory bonded(double previous_gap = 0.0) {
-  return ContactHistory{0.0, true, previous_gap};
+  ContactHistory h;
+  h.active = true;
+  h.normal_gap = previous_gap;
+  return h;
 }
 
 double just_above(double x) {
