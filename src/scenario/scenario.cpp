@@ -4,8 +4,8 @@
 #include <set>
 
 #include "core/error.h"
-#include "geometry/shapes.h"
 #include "model/kinematics.h"
+#include "scenario/body_builders.h"
 #include "scenario/scenario_readers.h"
 
 namespace sg {
@@ -47,6 +47,8 @@ void check_contact_laws_cover_materials(const TomlReader& root, const ScenarioDe
     used.insert(g.material);
   for (const WallDef& w : s.walls)
     used.insert(w.material);
+  for (const StripDef& strip : s.strips)
+    used.insert(strip.material);
   if (s.shear_cell) {
     used.insert(s.shear_cell->grain_material);
     used.insert(s.shear_cell->first_body_material);
@@ -76,8 +78,8 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
   const TomlDocument document(file);
   const TomlReader root = document.root();
   root.reject_unknown_keys({"name", "time", "output", "discretization", "physics", "materials",
-                            "grains", "walls", "contact_laws", "contact", "periodic", "shear_cell",
-                            "compaction_box"});
+                            "grains", "walls", "strips", "contact_laws", "contact", "periodic",
+                            "shear_cell", "compaction_box"});
   ScenarioDef s;
   s.source = file;
   s.name = root.string("name", file.stem().string());
@@ -85,6 +87,7 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
   read_output(root, s);
   read_discretization(root, s);
   read_physics(root, s);
+  read_periodic(root, s);
   const std::set<std::string> material_names = read_materials(root, s);
   if (auto t = root.table("shear_cell")) s.shear_cell = read_shear_cell(*t, material_names);
   if (auto t = root.table("compaction_box")) {
@@ -92,6 +95,7 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
     s.compaction_box = read_compaction_box(*t, material_names);
   }
   std::set<std::string> body_names;
+  read_strips(root, s, material_names, body_names);
   read_grains(root, s, material_names, body_names);
   read_walls(root, s, material_names, body_names);
   double cohesive_reach = 0.0;
@@ -104,7 +108,6 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
     cohesive_reach = std::max(cohesive_reach, 0.5 * p.adhesion / p.normal_stiffness);
   }
   read_contact_settings(root, s, cohesive_reach);
-  read_periodic(root, s);
   if (!s.contact_laws.empty()) check_contact_laws_cover_materials(root, s);
   return s;
 }
@@ -141,19 +144,11 @@ Model build_model(const ScenarioDef& scenario) {
   model.x_min = scenario.x_min;
   model.x_max = scenario.x_max;
   for (const GrainSpec& g : scenario.grains) {
-    const Polygon contour = g.shape == GrainShape::disc ? make_disc(g.center, g.radius, h)
-                                                        : make_ellipse(g.center, g.semi_axes.x(),
-                                                                       g.semi_axes.y(), g.angle, h);
     if (g.rigid) {
-      const BodyId b = model.add_rigid_body(g.name, contour, material_id(g.material));
-      const auto r =
-          static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index);
-      model.rigid.vx[r] = g.velocity.x();
-      model.rigid.vy[r] = g.velocity.y();
-      model.rigid.omega[r] = g.spin;
+      add_rigid_grain(model, g, material_id(g.material), h);
       continue;
     }
-    const BodyId b = model.add_deformable_body(g.name, contour, material_id(g.material),
+    const BodyId b = model.add_deformable_body(g.name, grain_contour(g, h), material_id(g.material),
                                                scenario.discretization);
     if (g.stretch != Vec2(1.0, 1.0)) set_affine_deformation(model, b, g.stretch.asDiagonal());
     set_rigid_velocity(model, b, g.velocity, g.spin);
@@ -174,18 +169,11 @@ Model build_model(const ScenarioDef& scenario) {
     add_compaction_box(model, *box,
                        box->grain_material.empty() ? 0 : material_id(box->grain_material),
                        material_id(box->wall_material), scenario.discretization);
-  for (const WallDef& w : scenario.walls) {
-    const BodyId b = model.add_rigid_body(w.name, make_rectangle(w.lower_left, w.upper_right, h),
-                                          material_id(w.material));
-    RigidDrive& drive =
-        model.rigid
-            .drive[static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index)];
-    const double v[3] = {w.velocity.x(), w.velocity.y(), 0.0};
-    for (int d = 0; d < 3; ++d) {
-      drive.mode[d] = DriveMode::velocity;
-      drive.velocity[d] = PiecewiseLinear::constant(v[d]);
-    }
-  }
+  for (const WallDef& w : scenario.walls)
+    add_wall(model, w, material_id(w.material), h);
+  for (const StripDef& strip : scenario.strips)
+    add_strip(model, strip, material_id(strip.material), scenario.x_min, scenario.x_max,
+              scenario.discretization);
   return model;
 }
 

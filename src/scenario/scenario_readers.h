@@ -27,6 +27,16 @@ void read_grains(const TomlReader& root, ScenarioDef& s,
 void read_walls(const TomlReader& root, ScenarioDef& s, const std::set<std::string>& material_names,
                 std::set<std::string>& body_names);
 
+// [[strips]] (after [periodic] and [discretization]: their profiles are checked on the
+// period), and a surface profile table ([strips.profile], [shear_cell.top_profile], ...)
+// whose unset keys keep `defaults`.
+void read_strips(const TomlReader& root, ScenarioDef& s,
+                 const std::set<std::string>& material_names, std::set<std::string>& body_names);
+SurfaceProfileDef read_profile(const TomlReader& t, const SurfaceProfileDef& defaults);
+// Fails on `t` (naming the file and line) if `profile` is not valid over the period.
+void check_profile(const TomlReader& t, const SurfaceProfileDef& profile, double x_begin,
+                   double period);
+
 // [shear_cell].
 ShearCellDef read_shear_cell(const TomlReader& t, const std::set<std::string>& material_names);
 

@@ -63,10 +63,27 @@ void read_normal_load(const TomlReader& t, ShearCellDef& c) {
 }  // namespace
 
 ShearCellDef read_shear_cell(const TomlReader& t, const std::set<std::string>& material_names) {
-  t.reject_unknown_keys({"length", "grains", "diameter", "grain_material", "first_body_material",
-                         "roughness_rms", "hurst", "first_body_thickness", "gap", "compaction_time",
-                         "velocity", "seed", "normal_load", "pressure", "servo_damping",
-                         "components", "first_bodies"});
+  t.reject_unknown_keys({"length",
+                         "grains",
+                         "diameter",
+                         "grain_material",
+                         "first_body_material",
+                         "roughness_rms",
+                         "hurst",
+                         "first_body_thickness",
+                         "gap",
+                         "compaction_time",
+                         "velocity",
+                         "seed",
+                         "normal_load",
+                         "pressure",
+                         "servo_damping",
+                         "components",
+                         "first_bodies",
+                         "bottom_profile",
+                         "top_profile",
+                         "bottom_drive",
+                         "top_drive"});
   ShearCellDef c;
   c.length = t.positive("length", c.length);
   c.grains = static_cast<int>(t.integer("grains", c.grains));
@@ -99,6 +116,21 @@ ShearCellDef read_shear_cell(const TomlReader& t, const std::set<std::string>& m
   const long seed = t.integer("seed", 1);
   if (seed < 0) t.fail("seed", "expected an integer >= 0");
   c.seed = static_cast<std::uint64_t>(seed);
+  const char* sides[2] = {"bottom", "top"};
+  for (int k = 0; k < 2; ++k) {
+    const std::string side = sides[k];
+    if (auto p = t.table(side + "_profile")) {
+      SurfaceProfileDef defaults;
+      defaults.rms = c.roughness_rms;
+      defaults.hurst = c.hurst;
+      defaults.seed = c.seed * 2 + static_cast<std::uint64_t>(k + 1);
+      (k == 0 ? c.bottom_profile : c.top_profile) = read_profile(*p, defaults);
+      check_profile(*p, k == 0 ? *c.bottom_profile : *c.top_profile, 0.0, c.length);
+    }
+    if (auto drive = t.table(side + "_drive"))
+      (k == 0 ? c.bottom_drive : c.top_drive) =
+          read_drive(*drive, c.first_bodies == FirstBodyKind::rigid, true);
+  }
   return c;
 }
 

@@ -39,18 +39,33 @@ void add_grains(Model& model, const std::vector<GrainDef>& grains, const Packing
   }
 }
 
-// The rough surfaces of both first bodies, sampled at about the node spacing (independent
-// seeds).
+// The surfaces of both first bodies about their mean lines, sampled at about the node
+// spacing: one period each, (x, height) with x increasing from 0.
 struct FirstBodyProfiles {
-  RoughProfile bottom, top;
+  std::vector<Vec2> bottom, top;
 };
 FirstBodyProfiles first_body_profiles(const ShearCellDef& def, double node_spacing) {
-  RoughSurfaceDef rough;
-  rough.length = def.length;
-  rough.points = std::max(8, static_cast<int>(std::lround(def.length / node_spacing)));
-  rough.hurst = def.hurst;
-  rough.rms = def.roughness_rms;
-  return {make_rough_profile(rough, def.seed * 2 + 1), make_rough_profile(rough, def.seed * 2 + 2)};
+  auto profile = [&](const std::optional<SurfaceProfileDef>& given, std::uint64_t seed,
+                     const char* name) {
+    SurfaceProfileDef self_affine;
+    self_affine.rms = def.roughness_rms;
+    self_affine.hurst = def.hurst;
+    self_affine.seed = seed;
+    return sample_profile(given ? *given : self_affine, 0.0, def.length, node_spacing, name);
+  };
+  return {profile(def.bottom_profile, def.seed * 2 + 1, "shear cell: bottom profile"),
+          profile(def.top_profile, def.seed * 2 + 2, "shear cell: top profile")};
+}
+
+double lowest(const std::vector<Vec2>& points) {
+  return std::min_element(points.begin(), points.end(),
+                          [](const Vec2& a, const Vec2& b) { return a.y() < b.y(); })
+      ->y();
+}
+double highest(const std::vector<Vec2>& points) {
+  return std::max_element(points.begin(), points.end(),
+                          [](const Vec2& a, const Vec2& b) { return a.y() < b.y(); })
+      ->y();
 }
 
 // The first bodies' contact surfaces: the bottom one runs right to left (material below), the
@@ -59,15 +74,11 @@ struct FirstBodySurfaces {
   Polygon bottom, top;
 };
 FirstBodySurfaces first_body_surfaces(const FirstBodyProfiles& profiles, double top_mean_y) {
-  const std::size_t n = profiles.bottom.heights.size();
   FirstBodySurfaces s;
-  for (std::size_t j = 0; j < n; ++j) {
-    const std::size_t k = n - 1 - j;
-    s.bottom.emplace_back(static_cast<double>(k) * profiles.bottom.spacing(),
-                          profiles.bottom.heights[k]);
-    s.top.emplace_back(static_cast<double>(j) * profiles.top.spacing(),
-                       top_mean_y + profiles.top.heights[j]);
-  }
+  for (auto p = profiles.bottom.rbegin(); p != profiles.bottom.rend(); ++p)
+    s.bottom.emplace_back(p->x(), p->y());
+  for (const Vec2& p : profiles.top)
+    s.top.emplace_back(p.x(), top_mean_y + p.y());
   return s;
 }
 
@@ -103,10 +114,8 @@ void add_deformable_first_bodies(Model& model, const ShearCellDef& def,
                                  MaterialId first_body_material,
                                  const DiscretizationParams& params) {
   const double period = def.length;
-  const double bottom_valley =
-      *std::min_element(profiles.bottom.heights.begin(), profiles.bottom.heights.end());
-  const double top_peak =
-      *std::max_element(profiles.top.heights.begin(), profiles.top.heights.end());
+  const double bottom_valley = lowest(profiles.bottom);
+  const double top_peak = highest(profiles.top);
   SG_VERIFY(def.first_body_thickness > std::max(-bottom_valley, top_peak),
             "shear cell: first_body_thickness " << def.first_body_thickness
                                                 << " must exceed the deepest valley / highest "
@@ -147,6 +156,7 @@ void add_deformable_first_bodies(Model& model, const ShearCellDef& def,
       d.load_damping[1] = servo.damping;
       d.velocity[1] = PiecewiseLinear::constant(0.0);
     }
+    apply_drive(is_top ? def.top_drive : def.bottom_drive, d, is_top ? -period : period);
     // The whole strip starts at its back face's velocity (a rigid strip would): no wave
     // sent through it by a back face set in motion alone at t = 0.
     set_rigid_velocity(model, b, Vec2(d.velocity[0](0.0), d.velocity[1](0.0)), 0.0);
@@ -185,6 +195,7 @@ void add_rigid_first_bodies(Model& model, const ShearCellDef& def,
       d.load_damping[1] = servo.damping;
       d.velocity[1] = PiecewiseLinear::constant(0.0);
     }
+    apply_drive(b == top_id ? def.top_drive : def.bottom_drive, d, b == top_id ? -period : period);
   }
 }
 
@@ -245,10 +256,8 @@ ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId g
   model.x_max = period;
 
   const FirstBodyProfiles profiles = first_body_profiles(def, h);
-  const double bottom_peak =
-      *std::max_element(profiles.bottom.heights.begin(), profiles.bottom.heights.end());
-  const double top_valley =
-      *std::min_element(profiles.top.heights.begin(), profiles.top.heights.end());
+  const double bottom_peak = highest(profiles.bottom);
+  const double top_valley = lowest(profiles.top);
 
   // Grains packed in a periodic strip above the bottom surface's peaks.
   const MixtureDef mixture = shear_cell_mixture(def, h);
