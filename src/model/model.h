@@ -83,7 +83,7 @@ enum class DriveMode : std::uint8_t {
 
 // A piecewise-linear function of time, constant beyond its ends (imposed velocities).
 struct PiecewiseLinear {
-  std::vector<double> times;  // strictly increasing
+  std::vector<double> times;  // non-decreasing; two equal times are a jump (value after: the 2nd)
   std::vector<double> values;
   double operator()(double t) const;
   static PiecewiseLinear constant(double value) { return {{0.0}, {value}}; }

@@ -28,6 +28,8 @@ std::vector<std::string> body_names(const ScenarioDef& s) {
   }
   for (const WallDef& w : s.walls)
     names.push_back(w.name);
+  for (const StripDef& strip : s.strips)  // scenario.cpp build_model: strips last
+    names.push_back(strip.name);
   return names;
 }
 
@@ -109,6 +111,8 @@ RunInfo read_run_info(const std::filesystem::path& run_dir) {
   info.body_names = body_names(s);
   for (const WallDef& w : s.walls)
     info.walls.push_back(w.name);
+  for (const StripDef& strip : s.strips)  // first bodies, not grains
+    info.walls.push_back(strip.name);
   if (s.compaction_box) info.walls.insert(info.walls.end(), {"bottom", "left", "right", "lid"});
   info.shear_cell = s.shear_cell.has_value();
   if (const auto& box = s.compaction_box) {

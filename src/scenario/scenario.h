@@ -1,24 +1,27 @@
 #pragma once
-// A scenario: everything one simulation needs, as checked definitions (docs/architecture.md
-// §Conventions 6: definition structs with defaults and units). The scenario layer turns TOML into
-// these; the engine never sees a file. docs/scenario.md documents every key.
+// A scenario: everything one simulation needs, as checked definitions (STYLE.md habit 7:
+// definition structs with defaults and units). The scenario layer turns TOML into these;
+// the engine never sees a file. docs/scenario.md documents every key.
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "contact/contact_system.h"
+#include "geometry/surface_profile.h"
 #include "material/material.h"
 #include "meshfree/body_discretization.h"
 #include "model/model.h"
 #include "scenario/compaction_box.h"
 #include "scenario/contact_law_def.h"
+#include "scenario/drive_def.h"
 #include "scenario/shear_cell.h"
 
 #include <optional>
 
 namespace sg {
 
-enum class GrainShape { disc, ellipse };
+// A grain is a disc, an ellipse or any simple closed contour (points inline or from a CSV).
+enum class GrainShape { disc, ellipse, contour };
 
 struct GrainSpec {
   std::string name;
@@ -32,6 +35,10 @@ struct GrainSpec {
   double spin = 0.0;              // initial angular velocity (rad / time)
   Vec2 stretch = Vec2(1.0, 1.0);  // initial homogeneous stretch along x and y (1 = none)
   bool rigid = false;             // rigid grain (3 DOF) instead of a meshfree continuum
+  // shape = contour: the vertices as given (absolute coordinates, CCW after loading), each
+  // edge subdivided at the node spacing when the body is built.
+  Polygon contour;
+  DriveDef drive;  // rigid grains: driven axes (unset: free)
 };
 
 // A rigid wall: a rectangle, fixed or moving at an imposed velocity.
@@ -40,6 +47,20 @@ struct WallDef {
   Vec2 lower_left = Vec2::Zero(), upper_right = Vec2::Zero();  // length
   std::string material;
   Vec2 velocity = Vec2::Zero();  // imposed velocity (length / time); rotation is held
+  DriveDef drive;                // axes driven otherwise than by `velocity` (docs/scenario.md)
+};
+
+// A periodic strip (a first body) spanning the periodic cell [x_min, x_max) outside a
+// [shear_cell]: its contact surface is a profile about the line y = surface_y, its flat back
+// face at y = back_y (below the surface for a strip under the gap, above for one over it).
+struct StripDef {
+  std::string name;
+  std::string material;
+  bool rigid = true;
+  double surface_y = 0.0, back_y = -1.0;  // length
+  SurfaceProfileDef profile;
+  DriveDef drive;                                    // unset axes: held (velocity 0)
+  bool above() const { return back_y > surface_y; }  // the strip is above the gap
 };
 
 struct ScenarioDef {
@@ -70,6 +91,7 @@ struct ScenarioDef {
   std::vector<MaterialDef> materials;
   std::vector<GrainSpec> grains;
   std::vector<WallDef> walls;
+  std::vector<StripDef> strips;  // [[strips]] (requires [periodic])
   // [[contact_laws]] and [contact]: no laws, no contacts.
   std::vector<ContactLawDef> contact_laws;
   double contact_cutoff = 0.0;  // 0: a quarter of the node spacing, at least the cohesive reach

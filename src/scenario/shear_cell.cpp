@@ -39,6 +39,166 @@ void add_grains(Model& model, const std::vector<GrainDef>& grains, const Packing
   }
 }
 
+// The surfaces of both first bodies about their mean lines, sampled at about the node
+// spacing: one period each, (x, height) with x increasing from 0.
+struct FirstBodyProfiles {
+  std::vector<Vec2> bottom, top;
+};
+FirstBodyProfiles first_body_profiles(const ShearCellDef& def, double node_spacing) {
+  auto profile = [&](const std::optional<SurfaceProfileDef>& given, std::uint64_t seed,
+                     const char* name) {
+    SurfaceProfileDef self_affine;
+    self_affine.rms = def.roughness_rms;
+    self_affine.hurst = def.hurst;
+    self_affine.seed = seed;
+    return sample_profile(given ? *given : self_affine, 0.0, def.length, node_spacing, name);
+  };
+  return {profile(def.bottom_profile, def.seed * 2 + 1, "shear cell: bottom profile"),
+          profile(def.top_profile, def.seed * 2 + 2, "shear cell: top profile")};
+}
+
+double lowest(const std::vector<Vec2>& points) {
+  return std::min_element(points.begin(), points.end(),
+                          [](const Vec2& a, const Vec2& b) { return a.y() < b.y(); })
+      ->y();
+}
+double highest(const std::vector<Vec2>& points) {
+  return std::max_element(points.begin(), points.end(),
+                          [](const Vec2& a, const Vec2& b) { return a.y() < b.y(); })
+      ->y();
+}
+
+// The first bodies' contact surfaces: the bottom one runs right to left (material below), the
+// top one left to right (material above), each closed across the seam by one period.
+struct FirstBodySurfaces {
+  Polygon bottom, top;
+};
+FirstBodySurfaces first_body_surfaces(const FirstBodyProfiles& profiles, double top_mean_y) {
+  FirstBodySurfaces s;
+  for (auto p = profiles.bottom.rbegin(); p != profiles.bottom.rend(); ++p)
+    s.bottom.emplace_back(p->x(), p->y());
+  for (const Vec2& p : profiles.top)
+    s.top.emplace_back(p.x(), top_mean_y + p.y());
+  return s;
+}
+
+// Pressure loading: F = -p L on the top's y, ramped up over the compaction time (a load
+// applied at once would drop the top onto the grains), with the servo's viscous force c. The
+// critical damping is that of the whole top (rigid, or a strip of the same mass: its area
+// between the mean surface line and the back face is L times the thickness) on the layer.
+struct ServoLoad {
+  PiecewiseLinear load;
+  double damping = 0.0;
+};
+ServoLoad servo_load(const Model& model, const ShearCellDef& def, MaterialId grain_material,
+                     double packed_height, double node_spacing, double grain_size, double mass,
+                     ShearCellInfo& info) {
+  info.normal_force = def.pressure * def.length;
+  const MaterialDef& grain = model.material_defs[static_cast<std::size_t>(grain_material)];
+  info.servo_damping =
+      def.servo_damping > 0.0
+          ? def.servo_damping
+          : servo_damping_estimate(grain.young, grain.poisson, packed_height, def.length,
+                                   def.contact_stiffness, node_spacing, grain_size, mass);
+  return {PiecewiseLinear{{0.0, def.compaction_time}, {0.0, -info.normal_force}},
+          info.servo_damping};
+}
+
+// Deformable first bodies: strips from the mean surface to a flat back face at the
+// thickness, the back faces driven as the rigid bodies of add_rigid_first_bodies (their
+// reactions are the forces in series.csv).
+void add_deformable_first_bodies(Model& model, const ShearCellDef& def,
+                                 const FirstBodyProfiles& profiles,
+                                 const FirstBodySurfaces& surfaces, const ShearCellInfo& info,
+                                 double closing_speed, const ServoLoad& servo,
+                                 MaterialId first_body_material,
+                                 const DiscretizationParams& params) {
+  const double period = def.length;
+  const double bottom_valley = lowest(profiles.bottom);
+  const double top_peak = highest(profiles.top);
+  SG_VERIFY(def.first_body_thickness > std::max(-bottom_valley, top_peak),
+            "shear cell: first_body_thickness " << def.first_body_thickness
+                                                << " must exceed the deepest valley / highest "
+                                                   "peak of the rough surfaces ("
+                                                << std::max(-bottom_valley, top_peak) << ")");
+  const BodyId ids[2] = {model.add_deformable_strip("bottom", surfaces.bottom, -period,
+                                                    info.bottom_mean_y - def.first_body_thickness,
+                                                    first_body_material, params),
+                         model.add_deformable_strip("top", surfaces.top, period,
+                                                    info.top_mean_y + def.first_body_thickness,
+                                                    first_body_material, params)};
+  // The back faces switch from closing to sliding with a linear ramp centred on the end of
+  // the compaction (so the travel is that of the rigid bodies' sharp switch) and lasting the
+  // strip's fundamental shear period T_s = 4 H / c_s (a layer of thickness H fixed at its
+  // back, free at its surface): a ramp of one period leaves that mode no residual vibration
+  // (the response to a ramp of duration tau rings with amplitude ~ |sin(omega tau / 2)|), where
+  // the sharp switch makes a strip ring with a force amplitude of M V omega / 2, larger than
+  // the friction force it carries.
+  const MaterialDef& fb = model.material_defs[static_cast<std::size_t>(first_body_material)];
+  const double shear_speed = std::sqrt(fb.young / (2.0 * (1.0 + fb.poisson) * fb.density));
+  const double ramp = std::min(4.0 * def.first_body_thickness / shear_speed, def.compaction_time);
+  const double t0 = def.compaction_time - 0.5 * ramp, t1 = def.compaction_time + 0.5 * ramp;
+  auto ramp_between = [&](double before, double after) {
+    return PiecewiseLinear{{0.0, t0, t1}, {before, before, after}};
+  };
+  for (BodyId b : ids) {
+    NodeDrive& d = model.node_drives[static_cast<std::size_t>(
+        model.bodies[static_cast<std::size_t>(b)].node_drive)];
+    const bool is_top = b == ids[1];
+    d.mode[0] = d.mode[1] = DriveMode::velocity;
+    d.velocity[0] = ramp_between(0.0, (is_top ? 0.5 : -0.5) * def.velocity);
+    d.velocity[1] = is_top ? ramp_between(-closing_speed, 0.0) : PiecewiseLinear::constant(0.0);
+    if (is_top && def.normal_load == NormalLoad::pressure) {
+      // The back face moves as one in y (a carrier of the back-face nodes' mass, NodeDrive)
+      // under the servo load, and slides at +V/2 in x.
+      d.mode[1] = DriveMode::load;
+      d.load[1] = servo.load;
+      d.load_damping[1] = servo.damping;
+      d.velocity[1] = PiecewiseLinear::constant(0.0);
+    }
+    apply_drive(is_top ? def.top_drive : def.bottom_drive, d, is_top ? -period : period);
+    // The whole strip starts at its back face's velocity (a rigid strip would): no wave
+    // sent through it by a back face set in motion alone at t = 0.
+    set_rigid_velocity(model, b, Vec2(d.velocity[0](0.0), d.velocity[1](0.0)), 0.0);
+  }
+}
+
+// Rigid first bodies: the bottom slides at -V/2 after the compaction, the top closes the gap
+// (or is servo-loaded) and then slides at +V/2.
+void add_rigid_first_bodies(Model& model, const ShearCellDef& def,
+                            const FirstBodySurfaces& surfaces, double closing_speed,
+                            const ServoLoad& servo, MaterialId first_body_material) {
+  const double period = def.length;
+  const double density = model.materials[static_cast<std::size_t>(first_body_material)].density;
+  const double mass = density * period * def.first_body_thickness;
+  const double inertia =
+      mass * (period * period + def.first_body_thickness * def.first_body_thickness) / 12.0;
+  const BodyId bottom_id =
+      model.add_rigid_strip("bottom", surfaces.bottom, first_body_material, -period, mass, inertia);
+  const BodyId top_id =
+      model.add_rigid_strip("top", surfaces.top, first_body_material, period, mass, inertia);
+  for (BodyId b : {bottom_id, top_id}) {
+    RigidDrive& d =
+        model.rigid
+            .drive[static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index)];
+    const double sign = b == top_id ? 1.0 : -1.0;
+    for (int k = 0; k < 3; ++k)
+      d.mode[k] = DriveMode::velocity;
+    d.velocity[0] = switch_at(def.compaction_time, 0.0, sign * 0.5 * def.velocity);
+    d.velocity[1] = b == top_id ? switch_at(def.compaction_time, -closing_speed, 0.0)
+                                : PiecewiseLinear::constant(0.0);
+    d.velocity[2] = PiecewiseLinear::constant(0.0);
+    if (b == top_id && def.normal_load == NormalLoad::pressure) {
+      // Servo-controlled confining pressure.
+      d.mode[1] = DriveMode::load;
+      d.load[1] = servo.load;
+      d.load_damping[1] = servo.damping;
+      d.velocity[1] = PiecewiseLinear::constant(0.0);
+    }
+    apply_drive(b == top_id ? def.top_drive : def.bottom_drive, d, b == top_id ? -period : period);
+  }
+}
+
 }  // namespace
 
 MixtureDef shear_cell_mixture(const ShearCellDef& def, double contour_spacing) {
@@ -95,18 +255,9 @@ ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId g
   model.x_min = 0.0;
   model.x_max = period;
 
-  // Rough surfaces, sampled at about the node spacing (independent seeds).
-  RoughSurfaceDef rough;
-  rough.length = period;
-  rough.points = std::max(8, static_cast<int>(std::lround(period / h)));
-  rough.hurst = def.hurst;
-  rough.rms = def.roughness_rms;
-  const RoughProfile bottom_profile = make_rough_profile(rough, def.seed * 2 + 1);
-  const RoughProfile top_profile = make_rough_profile(rough, def.seed * 2 + 2);
-  const double bottom_peak =
-      *std::max_element(bottom_profile.heights.begin(), bottom_profile.heights.end());
-  const double top_valley =
-      *std::min_element(top_profile.heights.begin(), top_profile.heights.end());
+  const FirstBodyProfiles profiles = first_body_profiles(def, h);
+  const double bottom_peak = highest(profiles.bottom);
+  const double top_valley = lowest(profiles.top);
 
   // Grains packed in a periodic strip above the bottom surface's peaks.
   const MixtureDef mixture = shear_cell_mixture(def, h);
@@ -132,113 +283,19 @@ ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId g
                                << info.top_mean_y - info.bottom_mean_y
                                << " (compaction closes the gap; it cannot open it)");
 
-  // First bodies: the bottom surface runs right to left (material below), the top one left
-  // to right (material above), each closed across the seam by one period.
-  const double density = model.materials[static_cast<std::size_t>(first_body_material)].density;
-  const double mass = density * period * def.first_body_thickness;
-  const double inertia =
-      mass * (period * period + def.first_body_thickness * def.first_body_thickness) / 12.0;
-  const std::size_t n = bottom_profile.heights.size();
-  Polygon bottom, top;
-  for (std::size_t j = 0; j < n; ++j) {
-    const std::size_t k = n - 1 - j;
-    bottom.emplace_back(static_cast<double>(k) * bottom_profile.spacing(),
-                        bottom_profile.heights[k]);
-    top.emplace_back(static_cast<double>(j) * top_profile.spacing(),
-                     info.top_mean_y + top_profile.heights[j]);
-  }
+  const FirstBodySurfaces surfaces = first_body_surfaces(profiles, info.top_mean_y);
   const double closing_speed = (packed_height - info.gap) / def.compaction_time;
-  // Pressure loading: F = -p L on the top's y, ramped up over the compaction time (a load
-  // applied at once would drop the top onto the grains), with the servo's viscous force. The
-  // critical damping is that of the whole top (rigid, or a strip of the same mass: its area
-  // between the mean surface line and the back face is L times the thickness) on the layer.
-  auto set_servo = [&](PiecewiseLinear& load, double& damping) {
-    info.normal_force = def.pressure * period;
-    const MaterialDef& grain = model.material_defs[static_cast<std::size_t>(grain_material)];
-    info.servo_damping =
-        def.servo_damping > 0.0
-            ? def.servo_damping
-            : servo_damping_estimate(grain.young, grain.poisson, packed_height, period,
-                                     def.contact_stiffness, h, grain_size, mass);
-    load = PiecewiseLinear{{0.0, def.compaction_time}, {0.0, -info.normal_force}};
-    damping = info.servo_damping;
-  };
-  if (def.first_bodies == FirstBodyKind::deformable) {
-    // Strips from the mean surface to a flat back face at the thickness; the back faces are
-    // driven as the rigid bodies below (their reactions are the forces in series.csv).
-    const double bottom_valley =
-        *std::min_element(bottom_profile.heights.begin(), bottom_profile.heights.end());
-    const double top_peak =
-        *std::max_element(top_profile.heights.begin(), top_profile.heights.end());
-    SG_VERIFY(def.first_body_thickness > std::max(-bottom_valley, top_peak),
-              "shear cell: first_body_thickness " << def.first_body_thickness
-                                                  << " must exceed the deepest valley / highest "
-                                                     "peak of the rough surfaces ("
-                                                  << std::max(-bottom_valley, top_peak) << ")");
-    const BodyId ids[2] = {
-        model.add_deformable_strip("bottom", bottom, -period,
-                                   info.bottom_mean_y - def.first_body_thickness,
-                                   first_body_material, params),
-        model.add_deformable_strip("top", top, period, info.top_mean_y + def.first_body_thickness,
-                                   first_body_material, params)};
-    // The back faces switch from closing to sliding with a linear ramp centred on the end of
-    // the compaction (so the travel is that of the rigid bodies' sharp switch) and lasting the
-    // strip's fundamental shear period T_s = 4 H / c_s (a layer of thickness H fixed at its
-    // back, free at its surface): a ramp of one period leaves that mode no residual vibration
-    // (the response to a ramp of duration tau rings with amplitude ~ |sin(omega tau / 2)|), where
-    // the sharp switch makes a strip ring with a force amplitude of M V omega / 2, larger than
-    // the friction force it carries.
-    const MaterialDef& fb = model.material_defs[static_cast<std::size_t>(first_body_material)];
-    const double shear_speed = std::sqrt(fb.young / (2.0 * (1.0 + fb.poisson) * fb.density));
-    const double ramp = std::min(4.0 * def.first_body_thickness / shear_speed, def.compaction_time);
-    const double t0 = def.compaction_time - 0.5 * ramp, t1 = def.compaction_time + 0.5 * ramp;
-    auto ramp_between = [&](double before, double after) {
-      return PiecewiseLinear{{0.0, t0, t1}, {before, before, after}};
-    };
-    for (BodyId b : ids) {
-      NodeDrive& d = model.node_drives[static_cast<std::size_t>(
-          model.bodies[static_cast<std::size_t>(b)].node_drive)];
-      const bool is_top = b == ids[1];
-      d.mode[0] = d.mode[1] = DriveMode::velocity;
-      d.velocity[0] = ramp_between(0.0, (is_top ? 0.5 : -0.5) * def.velocity);
-      d.velocity[1] = is_top ? ramp_between(-closing_speed, 0.0) : PiecewiseLinear::constant(0.0);
-      if (is_top && def.normal_load == NormalLoad::pressure) {
-        // The back face moves as one in y (a carrier of the back-face nodes' mass, NodeDrive)
-        // under the servo load, and slides at +V/2 in x.
-        d.mode[1] = DriveMode::load;
-        set_servo(d.load[1], d.load_damping[1]);
-        d.velocity[1] = PiecewiseLinear::constant(0.0);
-      }
-      // The whole strip starts at its back face's velocity (a rigid strip would): no wave
-      // sent through it by a back face set in motion alone at t = 0.
-      set_rigid_velocity(model, b, Vec2(d.velocity[0](0.0), d.velocity[1](0.0)), 0.0);
-    }
-    add_grains(model, grains, packed, mixture, grain_material, params);
-    return info;
+  ServoLoad servo;
+  if (def.normal_load == NormalLoad::pressure) {
+    const double density = model.materials[static_cast<std::size_t>(first_body_material)].density;
+    const double mass = density * period * def.first_body_thickness;
+    servo = servo_load(model, def, grain_material, packed_height, h, grain_size, mass, info);
   }
-  const BodyId bottom_id =
-      model.add_rigid_strip("bottom", bottom, first_body_material, -period, mass, inertia);
-  const BodyId top_id =
-      model.add_rigid_strip("top", top, first_body_material, period, mass, inertia);
-  for (BodyId b : {bottom_id, top_id}) {
-    RigidDrive& d =
-        model.rigid
-            .drive[static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index)];
-    const double sign = b == top_id ? 1.0 : -1.0;
-    for (int k = 0; k < 3; ++k)
-      d.mode[k] = DriveMode::velocity;
-    d.velocity[0] = switch_at(def.compaction_time, 0.0, sign * 0.5 * def.velocity);
-    d.velocity[1] = b == top_id ? switch_at(def.compaction_time, -closing_speed, 0.0)
-                                : PiecewiseLinear::constant(0.0);
-    d.velocity[2] = PiecewiseLinear::constant(0.0);
-    if (b == top_id && def.normal_load == NormalLoad::pressure) {
-      // Servo-controlled confining pressure.
-      d.mode[1] = DriveMode::load;
-      set_servo(d.load[1], d.load_damping[1]);
-      d.velocity[1] = PiecewiseLinear::constant(0.0);
-    }
-  }
-
+  if (def.first_bodies == FirstBodyKind::deformable)
+    add_deformable_first_bodies(model, def, profiles, surfaces, info, closing_speed, servo,
+                                first_body_material, params);
+  else
+    add_rigid_first_bodies(model, def, surfaces, closing_speed, servo, first_body_material);
   add_grains(model, grains, packed, mixture, grain_material, params);
   return info;
 }

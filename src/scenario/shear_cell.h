@@ -20,10 +20,14 @@
 #include <string>
 #include <vector>
 
+#include <optional>
+
 #include "geometry/packing.h"
 #include "geometry/size_distribution.h"
+#include "geometry/surface_profile.h"
 #include "meshfree/body_discretization.h"
 #include "model/model.h"
+#include "scenario/drive_def.h"
 
 namespace sg {
 
@@ -47,6 +51,13 @@ struct ShearCellDef {
   std::string first_body_material;  // a [[materials]] name
   double roughness_rms = 0.3;       // RMS height of both surfaces (length)
   double hurst = 0.8;               // Hurst exponent of the self-affine surfaces
+  // The first bodies' surfaces about their mean lines (geometry/surface_profile.h); unset:
+  // self-affine of roughness_rms and hurst, seeds 2 seed + 1 (bottom) and 2 seed + 2 (top).
+  std::optional<SurfaceProfileDef> bottom_profile, top_profile;
+  // Axes of the first bodies (or of their back faces) driven otherwise than by the built-in
+  // histories below (scenario/drive_def.h); unset axes keep them. A pressure on the top is
+  // F = -p L, on the bottom +p L.
+  DriveDef bottom_drive, top_drive;
   // Rigid: for the first bodies' mass; deformable: the strips' thickness, from the mean
   // surface to the back face (length). Either way, the top's mass in the servo estimate is
   // density L thickness.

@@ -146,6 +146,41 @@ bool TomlReader::boolean(const std::string& key, bool fallback) const {
   fail(key, "expected true or false");
 }
 
+std::vector<Vec2> TomlReader::pairs(const std::string& key, std::size_t min_count) const {
+  const toml::node* n = find(key);
+  const std::string expected =
+      "expected a list of pairs [[a, b], ...] (at least " + std::to_string(min_count) + ")";
+  if (!n) fail(key, "required " + expected.substr(9) + " is missing");
+  const toml::array* a = n->as_array();
+  if (!a || a->size() < min_count) fail(key, expected);
+  std::vector<Vec2> out;
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const toml::array* p = (*a)[i].as_array();
+    if (!p || p->size() != 2 || !(*p)[0].value<double>() || !(*p)[1].value<double>())
+      fail(key, expected + "; entry " + std::to_string(i + 1) + " is not a pair of numbers");
+    out.emplace_back(*(*p)[0].value<double>(), *(*p)[1].value<double>());
+  }
+  return out;
+}
+
+std::filesystem::path TomlReader::file_path(const std::string& key) const {
+  const std::filesystem::path name = string(key);
+  const std::filesystem::path path = name.is_absolute() ? name : file_.parent_path() / name;
+  if (!std::filesystem::is_regular_file(path))
+    fail(key, "file '" + path.string() + "' does not exist");
+  return path;
+}
+
+bool TomlReader::is_table(const std::string& key) const {
+  const toml::node* n = find(key);
+  return n && n->is_table();
+}
+
+bool TomlReader::is_array(const std::string& key) const {
+  const toml::node* n = find(key);
+  return n && n->is_array();
+}
+
 std::optional<TomlReader> TomlReader::table(const std::string& key) const {
   const toml::node* n = find(key);
   if (!n) return std::nullopt;

@@ -42,7 +42,14 @@ class TomlReader {
   Vec2 vec2(const std::string& key) const;
   Vec2 vec2(const std::string& key, const Vec2& fallback) const;
   bool boolean(const std::string& key, bool fallback) const;
+  // A required list of pairs [[a, b], ...] (points, (t, v) tables), at least `min_count`.
+  std::vector<Vec2> pairs(const std::string& key, std::size_t min_count) const;
+  // A required file name, relative to the scenario file's folder (or absolute); the file
+  // must exist.
+  std::filesystem::path file_path(const std::string& key) const;
   bool has(const std::string& key) const;
+  bool is_table(const std::string& key) const;
+  bool is_array(const std::string& key) const;
 
   std::optional<TomlReader> table(const std::string& key) const;
   std::vector<TomlReader> array_of_tables(const std::string& key) const;
