@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "command_registry.h"
-#include "render/analyze_run.h"
+#include "report/analyze_run.h"
 #include "render/plot_runner.h"
 
 namespace sg::app {

@@ -4,7 +4,7 @@
 #include "analysis/series.h"
 #include "command_registry.h"
 #include "core/error.h"
-#include "render/analyze_run.h"
+#include "report/analyze_run.h"
 #include "render/run_folder.h"
 #include "render/snapshot_renderer.h"
 

@@ -442,19 +442,8 @@ struct Varied {
   std::vector<const toml::node*> values;
 };
 
-}  // namespace
-
-CampaignDef load_campaign(const fs::path& file) {
-  SG_VERIFY(fs::exists(file), "campaign file '" << file.string() << "' does not exist");
-  toml::table doc;
-  try {
-    doc = toml::parse_file(file.string());
-  } catch (const toml::parse_error& e) {
-    SG_THROW(file.string() << ":" << e.source().begin.line << ":" << e.source().begin.column
-                           << ": TOML syntax error: " << e.description());
-  }
-  CampaignDef c;
-  c.file = file;
+// The campaign's own settings: name, base scenario, output, parallel, threads, analyze_options.
+void read_settings(const fs::path& file, const toml::table& doc, CampaignDef& c) {
   static const std::set<std::string> known = {"name",    "scenario",        "output", "parallel",
                                               "threads", "analyze_options", "grid",   "list"};
   for (const auto& [k, v] : doc)
@@ -491,10 +480,13 @@ CampaignDef load_campaign(const fs::path& file) {
       c.analyze_options.push_back(e.as_string()->get());
     }
   }
+}
 
-  // --- The varied parameters: [[list]] keys first, then [grid] keys, each in file order.
+// The [[list]] keys in file order, each with its value per entry; the number of entries.
+std::vector<Varied> read_list(const fs::path& file, const toml::table& doc,
+                              std::size_t& list_runs) {
   std::vector<Varied> varied;
-  std::size_t list_runs = 1;
+  list_runs = 1;
   if (const toml::node* n = doc.get("list")) {
     const auto* a = n->as_array();
     if (!a || !a->is_array_of_tables() || a->empty())
@@ -520,6 +512,11 @@ CampaignDef load_campaign(const fs::path& file) {
         v.values.push_back(by_key.at(v.key));
     }
   }
+  return varied;
+}
+
+// The [grid] keys in file order, each with its values.
+void read_grid(const fs::path& file, const toml::table& doc, std::vector<Varied>& varied) {
   if (const toml::node* n = doc.get("grid")) {
     const auto* t = n->as_table();
     if (!t) fail(file, line_of(*n), "grid", "", "expected a [grid] table of key = [values]");
@@ -534,6 +531,10 @@ CampaignDef load_campaign(const fs::path& file) {
       varied.push_back(std::move(v));
     }
   }
+}
+
+// Something to vary; no key set by sweep itself; no key varied twice (or inside another).
+void check_varied(const fs::path& file, const std::vector<Varied>& varied) {
   if (varied.empty()) SG_THROW(file.string() << ": no [grid] and no [[list]]: nothing to vary");
   for (std::size_t i = 0; i < varied.size(); ++i) {
     const std::string& key = varied[i].key;
@@ -545,11 +546,12 @@ CampaignDef load_campaign(const fs::path& file) {
         fail(file, varied[j].line, varied[j].key, varied[j].where,
              "also varied as '" + key + "' (line " + std::to_string(varied[i].line) + ")");
   }
+}
 
-  // --- The base scenario: every key must exist there, with a value of the same type.
+ScenarioBase read_base_scenario(const CampaignDef& c, const std::string& as_written) {
   ScenarioBase base;
   base.file = c.scenario;
-  base.as_written = scenario;
+  base.as_written = as_written;
   {
     std::ifstream in(c.scenario, std::ios::binary);
     std::ostringstream text;
@@ -562,7 +564,16 @@ CampaignDef load_campaign(const fs::path& file) {
     SG_THROW(c.scenario.string() << ":" << e.source().begin.line << ":" << e.source().begin.column
                                  << ": TOML syntax error: " << e.description());
   }
-  std::vector<std::vector<std::string>> texts(varied.size()), shown(varied.size());
+  return base;
+}
+
+// Each varied key checked against the base scenario; its values as TOML text (for the
+// scenario) and as shown in run ids. Fills c.parameters.
+void value_texts(const fs::path& file, const std::vector<Varied>& varied, const ScenarioBase& base,
+                 CampaignDef& c, std::vector<std::vector<std::string>>& texts,
+                 std::vector<std::vector<std::string>>& shown) {
+  texts.assign(varied.size(), {});
+  shown.assign(varied.size(), {});
   for (std::size_t p = 0; p < varied.size(); ++p) {
     const Varied& v = varied[p];
     const Resolved r = resolve(base.table, v.key);
@@ -585,9 +596,12 @@ CampaignDef load_campaign(const fs::path& file) {
     }
     c.parameters.push_back({v.key, "", v.line});
   }
-  assign_labels(c.parameters);
+}
 
-  // --- The runs: each [[list]] entry times the [grid] product, the first grid key slowest.
+// The runs: each [[list]] entry times the [grid] product, the first grid key slowest.
+void expand_runs(const fs::path& file, const std::vector<Varied>& varied, std::size_t list_runs,
+                 const std::vector<std::vector<std::string>>& texts,
+                 const std::vector<std::vector<std::string>>& shown, CampaignDef& c) {
   std::size_t grid_runs = 1;
   for (const Varied& v : varied)
     if (v.where == " in [grid]") grid_runs *= v.values.size();
@@ -616,6 +630,35 @@ CampaignDef load_campaign(const fs::path& file) {
     }
     c.runs.push_back(std::move(run));
   }
+}
+
+}  // namespace
+
+CampaignDef load_campaign(const fs::path& file) {
+  SG_VERIFY(fs::exists(file), "campaign file '" << file.string() << "' does not exist");
+  toml::table doc;
+  try {
+    doc = toml::parse_file(file.string());
+  } catch (const toml::parse_error& e) {
+    SG_THROW(file.string() << ":" << e.source().begin.line << ":" << e.source().begin.column
+                           << ": TOML syntax error: " << e.description());
+  }
+  CampaignDef c;
+  c.file = file;
+  read_settings(file, doc, c);
+
+  // The varied parameters: [[list]] keys first, then [grid] keys, each in file order.
+  std::size_t list_runs = 1;
+  std::vector<Varied> varied = read_list(file, doc, list_runs);
+  read_grid(file, doc, varied);
+  check_varied(file, varied);
+
+  // The base scenario: every key must exist there, with a value of the same type.
+  const ScenarioBase base = read_base_scenario(c, string_value(file, doc, "scenario", ""));
+  std::vector<std::vector<std::string>> texts, shown;
+  value_texts(file, varied, base, c, texts, shown);
+  assign_labels(c.parameters);
+  expand_runs(file, varied, list_runs, texts, shown, c);
   for (CampaignRun& run : c.runs)
     run.scenario_text = patch_scenario(base, c, run);
   return c;

@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "render/analyze_run.h"
+#include "report/analyze_run.h"
 #include "render/coherence_frames.h"
 #include "render/plot_runner.h"
 #include "render/snapshot_renderer.h"

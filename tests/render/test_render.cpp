@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "render/analyze_run.h"
+#include "report/analyze_run.h"
 #include "render/snapshot_renderer.h"
 #include "render/vtu_reader.h"
 #include "tiny_run.h"

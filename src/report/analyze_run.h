@@ -28,8 +28,8 @@
 // agglomerate_pdfs.csv columns: quantity (omega_tilde, diameter, lifetime), bin_lo,
 // bin_hi, density (grain-weighted, integrates to 1 over the bins of a quantity).
 //
-// Lives in render/ only because it needs the scenario layer (for run.log's scenario) and
-// render is the first stage above io; it belongs in analysis/ once that stage links io.
+// The steps, one file each: report/analyze_steps.h. This stage sits above render (it reads
+// the run folder with render's .vtu/.pvd and run.log readers) and below the commands.
 #include <filesystem>
 #include <optional>
 #include <string>
