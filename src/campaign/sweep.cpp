@@ -166,27 +166,39 @@ void write_slurm_script(const CampaignDef& campaign, const fs::path& folder,
                   fs::perm_options::add);
 }
 
-// Draws mu over the first two parameters with scripts/plot_campaign.py, if Debian's python
-// with matplotlib is there; otherwise says how to do it.
+bool python_imports(const std::string& modules) {
+  return std::system(
+             (std::string(kPython) + " -c 'import " + modules + "' >/dev/null 2>&1").c_str()) == 0;
+}
+
+// Draws mu over the first two parameters and, with SciPy (interpolation, correlations), the
+// campaign figures (scripts/plot_campaign.py --all), if Debian's python with matplotlib is
+// there; otherwise says how to do it.
 void plot(const fs::path& folder, std::ostream* out) {
   const fs::path script = SOFTGRAIN_PLOT_CAMPAIGN_SCRIPT;
   const fs::path table = folder / "campaign.csv", map = folder / "mu_map.png";
-  const std::string command = std::string(kPython) + " " + shell_quoted(script.string()) + " " +
-                              shell_quoted(table.string()) + " -o " + shell_quoted(map.string());
-  const bool available =
-      fs::exists(script) && fs::exists(kPython) &&
-      std::system((std::string(kPython) + " -c 'import matplotlib' >/dev/null 2>&1").c_str()) == 0;
+  const bool available = fs::exists(script) && fs::exists(kPython) && python_imports("matplotlib");
   if (!available) {
     if (out)
       *out << "map: no " << kPython << " with matplotlib here; draw it elsewhere with\n  python3 "
-           << "scripts/plot_campaign.py " << table.string() << " -o " << map.string() << "\n";
+           << "scripts/plot_campaign.py " << table.string() << " -o " << map.string() << " --all\n";
     return;
   }
+  const bool figures = python_imports("scipy");
+  if (!figures && out)
+    *out << "figures: " << kPython << " has no scipy (Debian: python3-scipy): only the map\n";
+  const std::string command = std::string(kPython) + " " + shell_quoted(script.string()) + " " +
+                              shell_quoted(table.string()) + " -o " + shell_quoted(map.string()) +
+                              (figures ? " --all" : "");
   const fs::path log = folder / "plot.log";
   const int status = std::system((command + " > " + shell_quoted(log.string()) + " 2>&1").c_str());
   if (out) {
     if (status == 0)
-      *out << "map: " << map.string() << "\n";
+      *out << "map: " << map.string()
+           << (figures ? "; figures: campaign_points.png, mu_vs_stress.png, maps*.png, "
+                         "correlations.png, correlations.csv"
+                       : "")
+           << "\n";
     else
       *out << "map: plot_campaign.py failed (see " << log.string() << "):\n  " << command << "\n";
   }
@@ -213,8 +225,10 @@ struct CampaignProgress {
 
 CampaignProgress read_progress(const CampaignDef& campaign, const fs::path& folder) {
   CampaignProgress progress;
+  // A paper coordinate's column says it is the requested value: summary.json's quantity of
+  // the same name (also a column) is the realized one.
   for (const CampaignParameter& p : campaign.parameters)
-    progress.keys.push_back(p.key);
+    progress.keys.push_back(p.paper_coordinate ? p.key + "_requested" : p.key);
   for (const CampaignRun& run : campaign.runs) {
     const fs::path dir = campaign_run_folder(folder, run);
     progress.states.push_back(run_state(dir));

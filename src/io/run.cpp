@@ -335,8 +335,9 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
     std::snprintf(name, sizeof name, "%06d.%s", loop.next_snapshot, extension);
     return std::string(name);
   };
+  const double strain_rate_unit = global_strain_rate(scenario);  // V/D (io/vtk_writer.h)
   auto write_state_files = [&]() {
-    write_vtu_snapshot(model, dir / "fields" / snapshot_name("vtu"));
+    write_vtu_snapshot(model, dir / "fields" / snapshot_name("vtu"), strain_rate_unit);
     write_grain_snapshot(model, dir / "grains" / snapshot_name("csv"));
   };
   auto commit_snapshot = [&](double t) {

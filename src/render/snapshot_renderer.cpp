@@ -88,6 +88,7 @@ std::string unit_of(const std::string& field) {
   if (field.rfind("velocity", 0) == 0) return "length/time";
   if (field.rfind("displacement", 0) == 0) return "length";
   if (field == "green_lagrange_norm") return "1";
+  if (field == "strain_rate") return "V/D";
   if (field == "von_mises" || field == "pressure" || field.rfind("sigma_", 0) == 0) return "stress";
   return "";
 }

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "analysis/agglomerate_statistics.h"
+#include "analysis/structure_cylinders.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
 #include "render/coherence_frames.h"
@@ -113,6 +114,11 @@ void analyze_agglomerates(AnalyzeResult& r, std::span<const GrainSnapshot> frame
     r.agglomerate_pdfs_path = run_dir / "analysis" / "agglomerate_pdfs.csv";
     write_file_atomically(r.agglomerates_path.string(), structures_csv(a, frames));
     write_file_atomically(r.agglomerate_pdfs_path.string(), pdfs.str());
+    // The stacked picture and the cylinders (paper 002 Figs 8C, 9, 10, 14).
+    r.space_time_path = run_dir / "analysis" / "agglomerate_space_time.csv";
+    r.cylinders_path = run_dir / "analysis" / "agglomerate_cylinders.csv";
+    write_space_time_csv(r.space_time_path.string(), a, frames.front().time);
+    write_cylinders_csv(r.cylinders_path.string(), structure_cylinders(a, frames.front().time));
     r.agglomerates = std::move(a);
   } catch (const Error& e) {
     r.summary.agglomerates.reset();

@@ -52,11 +52,20 @@ void resolve_mean_diameter(AnalyzeResult& r, const Snapshots& snaps, const Analy
 
 // --- report/shear_report.cpp
 // The steady window, friction, E~ c~ alpha~ and the energy budget of the shear cell's
-// driven bodies "top" and "bottom" (the whole run as window without them).
-void analyze_shear(AnalyzeResult& r, const Series& series, const AnalyzeOptions& options);
+// driven bodies "top" and "bottom" (the whole run as window without them); D measured
+// (measure_gap) when the scenario does not give it.
+void analyze_shear(AnalyzeResult& r, const Series& series, const RunInfo& run,
+                   const AnalyzeOptions& options, const std::filesystem::path& run_dir);
+
+// --- report/gap_report.cpp
+// Under pressure loading D is an output: the mean over the window of the distance between
+// the rough surfaces' mean lines, from the first bodies' positions in series.csv and their
+// surfaces in the first field snapshot. Sets parameters.gap and its source; a note if not.
+void measure_gap(AnalyzeResult& r, const Series& series, const RunInfo& run,
+                 const std::filesystem::path& run_dir);
 
 // --- report/layer_report.cpp
-// Velocity profile and solid fraction of the window's snapshots.
+// Velocity profile, solid fraction and activated thickness of the window's snapshots.
 void analyze_layer(AnalyzeResult& r, std::span<const GrainSnapshot> window_snaps,
                    const RunInfo& run, const AnalyzeOptions& options,
                    const std::filesystem::path& run_dir);

@@ -79,11 +79,13 @@ void note_dimensionless_gaps(const AnalyzeResult& r, std::vector<std::string>& n
 
 }  // namespace
 
-void analyze_shear(AnalyzeResult& r, const Series& series, const AnalyzeOptions& options) {
+void analyze_shear(AnalyzeResult& r, const Series& series, const RunInfo& run,
+                   const AnalyzeOptions& options, const std::filesystem::path& run_dir) {
   std::vector<std::string>& notes = r.notes;
   const std::vector<DrivenBody> bodies = shear_cell_columns(series, notes);
   AnalysisSummary& s = r.summary;
   s.window = choose_window(series, bodies, options, notes);
+  measure_gap(r, series, run, run_dir);
   s.friction.mean = unknown_friction("mean");
   if (!bodies.empty()) {
     try {

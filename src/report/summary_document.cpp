@@ -38,6 +38,8 @@ std::string summary_document(const AnalyzeResult& r, const fs::path& run_dir) {
     nlohmann::ordered_json ag;
     ag["structures_file"] = "agglomerates.csv";
     ag["pdfs_file"] = "agglomerate_pdfs.csv";
+    ag["space_time_file"] = "agglomerate_space_time.csv";
+    ag["cylinders_file"] = "agglomerate_cylinders.csv";
     ag["grid"] = r.agglomerate_grid;
     ag["grid_spacing"] = a.grid.hx;
     ag["mls_support_radius"] = 2.0 * r.parameters.mean_diameter;
@@ -52,6 +54,17 @@ std::string summary_document(const AnalyzeResult& r, const fs::path& run_dir) {
       ag["omega_tilde_pdf_outside"] = r.summary.agglomerates->omega_pdf.outside;
     }
     doc["agglomerates"] = std::move(ag);
+  }
+  if (r.att) {
+    nlohmann::ordered_json att;
+    att["file"] = "att.csv";
+    att["threshold_low"] = r.att->thresholds.lo;
+    att["threshold_high"] = r.att->thresholds.hi;
+    att["layer_thickness"] = r.att->layer_thickness;
+    att["layer_thickness_source"] = r.att_layer_source;
+    att["profile_bins"] = r.att->profile_bins;
+    att["snapshots"] = r.att->samples.size();
+    doc["att"] = std::move(att);
   }
   if (r.compaction) {
     nlohmann::ordered_json c;
