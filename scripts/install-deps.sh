@@ -10,9 +10,12 @@
 #   libcairo2-dev       PNG rendering of grains (render/)
 #   nlohmann-json3-dev  analysis summaries (summary.json)
 #   python3-matplotlib  plots drawn by /usr/bin/python3 (analysis pictures)
+#   python3-scipy       campaign maps (scattered-data interpolation) and correlations
+#   ffmpeg              the MP4 movies `softgrain render` makes (ffprobe checks them in tests)
 set -euo pipefail
 packages=(cmake g++ make libeigen3-dev libcgal-dev libtomlplusplus-dev libcli11-dev
-          libgtest-dev libbenchmark-dev libcairo2-dev nlohmann-json3-dev python3-matplotlib python3-numpy)
+          libgtest-dev libbenchmark-dev libcairo2-dev nlohmann-json3-dev python3-matplotlib python3-numpy
+          python3-scipy ffmpeg)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

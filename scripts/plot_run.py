@@ -18,6 +18,14 @@ are there (otherwise it says why and goes on):
                        agglomerates (agglomerate_pdfs.csv)
   compaction.png       compaction-box runs only: solid fraction against lid stress, and both
                        against time (compaction.csv); nothing said for other runs
+  space_time.png       the filtered coherence |C| > threshold stacked over time, projected on
+                       x-t and y-t, red where C > 0 (counter-clockwise), blue where C < 0
+                       (clockwise, with the shear) (paper 002 Fig. 8C; agglomerate_space_time.csv)
+  cylinders.png        each detected structure as a cylinder in (x, y, t): axis at its centre,
+                       height = lifetime, diameter = mean-area diameter, coloured by omega~
+                       (paper 002 Figs 9, 10, 14; agglomerate_cylinders.csv)
+  att.png              activated third-body thickness against time, from the velocity map and
+                       from the profile, the window means as lines (paper 003 Fig. 13; att.csv)
 
 Needs numpy and matplotlib (Debian: python3-numpy, python3-matplotlib). Each picture is
 written to a temporary file and renamed, so a reader never sees half a PNG. Exit status 0
@@ -253,6 +261,92 @@ def plot_compaction(analysis_dir):
     return save(fig, os.path.join(analysis_dir, "compaction.png")), None
 
 
+def plot_space_time(analysis_dir):
+    path = os.path.join(analysis_dir, "agglomerate_space_time.csv")
+    if not os.path.exists(path):
+        return None, "no space-time picture: analysis/agglomerate_space_time.csv is missing"
+    c = read_csv(path)
+    t, x, y, sign = (numbers(path, c, k) for k in ("time", "x", "y", "sign"))
+    fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4.2))
+    if t.size == 0:
+        for ax in (a, b):
+            ax.text(0.5, 0.5, "no cell with |C| above the threshold", ha="center",
+                    va="center", transform=ax.transAxes)
+    for ax, coordinate, name in ((a, x, "x"), (b, y, "y")):
+        for s_value, colour, label in ((1, "tab:red", "C > 0 (counter-clockwise)"),
+                                       (-1, "tab:blue", "C < 0 (clockwise)")):
+            sel = sign == s_value
+            if sel.any():
+                ax.scatter(coordinate[sel], t[sel], s=6, marker="s", color=colour,
+                           alpha=0.35, linewidths=0, label=label)
+        ax.set_xlabel(name)
+        ax.set_ylabel("time")
+        ax.set_title(f"{name}-t projection", fontsize=10)
+        ax.grid(alpha=0.3)
+    if t.size:
+        a.legend(fontsize=8, loc="upper right")
+    fig.suptitle("filtered coherence stacked over time (paper 002)")
+    fig.tight_layout()
+    return save(fig, os.path.join(analysis_dir, "space_time.png")), None
+
+
+def plot_cylinders(analysis_dir):
+    path = os.path.join(analysis_dir, "agglomerate_cylinders.csv")
+    if not os.path.exists(path):
+        return None, "no cylinders: analysis/agglomerate_cylinders.csv is missing"
+    c = read_csv(path)
+    x, y, t0, h, d, w, sign = (numbers(path, c, k) for k in (
+        "x_center", "y_center", "t_bottom", "height", "diameter", "omega_tilde", "sign"))
+    fig = plt.figure(figsize=(8, 6))
+    ax = fig.add_subplot(projection="3d")
+    known = np.isfinite(w)
+    colour_of = sign if not known.any() else np.where(known, w, np.nan)
+    finite = colour_of[np.isfinite(colour_of)]
+    lo, hi = (finite.min(), finite.max()) if finite.size else (-1.0, 1.0)
+    if hi <= lo:
+        lo, hi = lo - 1.0, hi + 1.0
+    cmap = plt.get_cmap("coolwarm")
+    theta = np.linspace(0, 2 * np.pi, 24)
+    for k in range(x.size):
+        z = np.array([t0[k], t0[k] + h[k]])
+        th, zz = np.meshgrid(theta, z)
+        value = colour_of[k]
+        colour = cmap((value - lo) / (hi - lo)) if np.isfinite(value) else "grey"
+        ax.plot_surface(x[k] + 0.5 * d[k] * np.cos(th), y[k] + 0.5 * d[k] * np.sin(th), zz,
+                        color=colour, alpha=0.8, linewidth=0)
+    ax.set_xlabel("x")
+    ax.set_ylabel("y")
+    ax.set_zlabel("time")
+    mappable = plt.cm.ScalarMappable(cmap=cmap, norm=plt.Normalize(lo, hi))
+    fig.colorbar(mappable, ax=ax, shrink=0.7,
+                 label="omega~" if known.any() else "sign of rotation")
+    ax.set_title(f"{x.size} structures: height = lifetime, diameter = mean-area diameter",
+                 fontsize=10)
+    return save(fig, os.path.join(analysis_dir, "cylinders.png")), None
+
+
+def plot_att(analysis_dir, summary):
+    path = os.path.join(analysis_dir, "att.csv")
+    if not os.path.exists(path):
+        return None, "no activated thickness: analysis/att.csv is missing"
+    c = read_csv(path)
+    t, grains, profile = (numbers(path, c, k) for k in ("time", "att_map", "att_profile"))
+    fig, ax = plt.subplots(figsize=(8, 4.2))
+    ax.plot(t, grains, "o-", ms=3, color="tab:blue", label="from the velocity map")
+    ax.plot(t, profile, "s-", ms=3, color="tab:orange", label="from the profile")
+    for key, colour in (("att_map", "tab:blue"), ("att_profile", "tab:orange")):
+        v = value(summary, key)
+        if v is not None:
+            ax.axhline(v, color=colour, ls="--", lw=1)
+    ax.set_xlabel("time")
+    ax.set_ylabel("activated thickness (length)")
+    ax.set_title("activated third-body thickness (paper 003 §3.4)", fontsize=10)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    return save(fig, os.path.join(analysis_dir, "att.png")), None
+
+
 def main(argv):
     if len(argv) != 2:
         print(f"usage: {argv[0]} RUN_DIR", file=sys.stderr)
@@ -266,7 +360,10 @@ def main(argv):
                      lambda: plot_profiles(analysis_dir),
                      lambda: plot_energy(analysis_dir, summary),
                      lambda: plot_agglomerates(analysis_dir),
-                     lambda: plot_compaction(analysis_dir)):
+                     lambda: plot_compaction(analysis_dir),
+                     lambda: plot_space_time(analysis_dir),
+                     lambda: plot_cylinders(analysis_dir),
+                     lambda: plot_att(analysis_dir, summary)):
             path, why = draw()
             if path or why:
                 (written if path else skipped).append(path or why)

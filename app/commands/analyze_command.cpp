@@ -4,8 +4,8 @@
 #include <iostream>
 
 #include "command_registry.h"
-#include "render/analyze_run.h"
 #include "render/plot_runner.h"
+#include "report/analyze_run.h"
 
 namespace sg::app {
 namespace {
@@ -20,6 +20,7 @@ struct AnalyzeArguments {
   int bins = 0;
   bool no_agglomerates = false;
   double threshold = 0.8;
+  std::vector<double> att_thresholds;
   bool plots = false, no_plots = false;
 };
 
@@ -77,6 +78,10 @@ const Registration registration(
                        "|C| above which a grid node belongs to a structure (paper 002: 0.8)")
            ->check(CLI::Range(0.0, 1.0).description("in (0, 1)"))
            ->capture_default_str();
+       cmd->add_option("--att-thresholds", a->att_thresholds,
+                       "shares of the velocity jump LO HI bounding the activated third-body "
+                       "thickness (paper 003: 0.2 0.8)")
+           ->expected(2);
        CLI::Option* plots = cmd->add_flag(
            "--plots", a->plots,
            "draw mu(t), profiles, energy shares, agglomerate PDFs, the compaction curve into "
@@ -98,6 +103,7 @@ const Registration registration(
          o.profile_bins = a->bins;
          o.agglomerates = !a->no_agglomerates;
          o.coherence_threshold = a->threshold;
+         if (a->att_thresholds.size() == 2) o.att = {a->att_thresholds[0], a->att_thresholds[1]};
          const AnalyzeResult r = analyze_run(a->run_dir, o);
          std::cout << format_summary_table(r.summary);
          if (r.compaction) std::cout << format_compaction_table(*r.compaction);
@@ -113,7 +119,8 @@ const Registration registration(
          }
          std::cout << "\nwritten: " << r.summary_path.string();
          for (const auto* path :
-              {&r.profile_path, &r.agglomerates_path, &r.agglomerate_pdfs_path, &r.compaction_path})
+              {&r.profile_path, &r.agglomerates_path, &r.agglomerate_pdfs_path, &r.space_time_path,
+               &r.cylinders_path, &r.att_path, &r.compaction_path})
            if (!path->empty()) std::cout << ", " << path->filename().string();
          std::cout << "\n";
          return a->no_plots ? 0 : draw_plots(a->run_dir, a->plots);

@@ -4,9 +4,9 @@
 #include "analysis/series.h"
 #include "command_registry.h"
 #include "core/error.h"
-#include "render/analyze_run.h"
 #include "render/run_folder.h"
 #include "render/snapshot_renderer.h"
+#include "report/analyze_run.h"
 
 namespace sg::app {
 namespace {
@@ -40,7 +40,8 @@ const Registration registration(
        cmd->add_option("run_dir", args->run_dir, "run folder (holds fields.pvd)")->required();
        cmd->add_option("--field", args->field,
                        "von_mises | velocity | velocity_x | velocity_y | body | "
-                       "green_lagrange_norm | pressure | sigma_xx | sigma_yy | sigma_xy | "
+                       "green_lagrange_norm | strain_rate (d|E|/dt over V/D) | pressure | "
+                       "sigma_xx | sigma_yy | sigma_xy | "
                        "displacement | coherence (paper 002 eq. 5 at each grain's centre, "
                        "from grains/NNNNNN.csv; range [-1, 1])")
            ->capture_default_str();

@@ -38,10 +38,10 @@
 namespace sg {
 
 struct AgglomerateParams {
-  double grid_spacing = 1.0;  // Delta x = Delta y, paper 002: 1 (one mean grain diameter)
-  VelocityFitParams interpolation;    // support radius default 2 diameters
-  CoherenceParams coherence;  // R default 2.5 diameters
-  double threshold = 0.8;     // |C| > threshold, paper 002 §2.2
+  double grid_spacing = 1.0;        // Delta x = Delta y, paper 002: 1 (one mean grain diameter)
+  VelocityFitParams interpolation;  // support radius default 2 diameters
+  CoherenceParams coherence;        // R default 2.5 diameters
+  double threshold = 0.8;           // |C| > threshold, paper 002 §2.2
 };
 
 struct Structure {

@@ -6,8 +6,8 @@
 #include <limits>
 #include <sstream>
 
-#include "io/atomic_file.h"
 #include "core/error.h"
+#include "io/atomic_file.h"
 
 namespace sg {
 

@@ -79,6 +79,13 @@ std::vector<SummaryEntry> summary_entries(const AnalysisSummary& s) {
                "change of the energy-balance residual over the window (ideally 0)"});
   e.push_back({"solid_fraction", s.solid_fraction, "1",
                "S_F = grain area / (L x layer height), mean over snapshots (paper 002 §3.3)"});
+  e.push_back({"att_map", s.att_map, "length",
+               "activated third-body thickness from the velocity map: layer thickness x area "
+               "share of the grains moving at 20-80% of the velocity jump (the thresholds: "
+               "\"att\"), mean over the window's snapshots (paper 003 §3.4, Fig. 13a)"});
+  e.push_back({"att_profile", s.att_profile, "length",
+               "activated third-body thickness from the profile: height of the bins whose mean "
+               "vx lies at 20-80% of the jump, mean over the snapshots (paper 003 Fig. 13b)"});
   const AgglomerateStatistics a = s.agglomerates.value_or(
       AgglomerateStatistics{kNan, kNan, kNan, kNan, kNan, kNan, kNan, kNan, kNan, {}, {}});
   e.push_back({"structure_count", a.structure_count, "1",

@@ -26,6 +26,8 @@ struct AnalysisSummary {
   DimensionlessParameters dimensionless;
   std::optional<EnergyBudget> energy;  // absent if the budget is undefined
   double solid_fraction = RunParameters::kUnknown;
+  // Activated third-body thickness, mean over the window's snapshots (activated_thickness.h).
+  double att_map = RunParameters::kUnknown, att_profile = RunParameters::kUnknown;
   std::optional<AgglomerateStatistics> agglomerates;  // absent without snapshots
 };
 

@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "campaign/paper_coordinates.h"
 #include "core/error.h"
 
 namespace sg {
@@ -277,6 +278,18 @@ std::string quoted(const std::string& s) {
   return plain ? "\"" + s + "\"" : printed(toml::value<std::string>(s));
 }
 
+// The (key, TOML text) pairs a run sets in the scenario: its varied keys, and for varied
+// paper coordinates the physical keys they set (campaign/paper_coordinates.h).
+std::vector<std::pair<std::string, std::string>> scenario_values(const CampaignDef& campaign,
+                                                                 const CampaignRun& run) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (std::size_t p = 0; p < campaign.parameters.size(); ++p)
+    if (!campaign.parameters[p].paper_coordinate)
+      out.emplace_back(campaign.parameters[p].key, run.values[p]);
+  out.insert(out.end(), run.derived.begin(), run.derived.end());
+  return out;
+}
+
 // The base scenario with the run's values, name and output folder. Edits the text in place
 // (comments and layout kept); if the result does not read back with exactly the intended
 // values (an unusual layout, e.g. an inline [output] table without `directory`), the table
@@ -286,9 +299,9 @@ std::string patch_scenario(const ScenarioBase& base, const CampaignDef& campaign
   const TextPositions positions(base.text);
   std::vector<Edit> edits;
   bool layout_ok = true;
-  for (std::size_t p = 0; p < campaign.parameters.size(); ++p)
-    edits.push_back(replace_node(positions, *resolve(base.table, campaign.parameters[p].key).node,
-                                 run.values[p]));
+  const auto values = scenario_values(campaign, run);
+  for (const auto& [key, text] : values)
+    edits.push_back(replace_node(positions, *resolve(base.table, key).node, text));
   if (const toml::node* name = base.table.get("name")) {
     edits.push_back(replace_node(positions, *name, quoted(run.id)));
   } else {
@@ -326,13 +339,15 @@ std::string patch_scenario(const ScenarioBase& base, const CampaignDef& campaign
          << "scenario " << base.as_written << " with";
   for (std::size_t p = 0; p < campaign.parameters.size(); ++p)
     header << (p ? ", " : " ") << campaign.parameters[p].key << " = " << run.values[p];
+  for (const auto& [key, text] : run.derived)
+    header << ",\n#   so " << key << " = " << text;
   header << ".\n";
 
   const auto reads_back = [&](const std::string& text) {
     try {
       const toml::table t = toml::parse(text);
-      for (std::size_t p = 0; p < campaign.parameters.size(); ++p)
-        if (!has_value(t, campaign.parameters[p].key, run.values[p])) return false;
+      for (const auto& [key, value] : values)
+        if (!has_value(t, key, value)) return false;
       const auto output = t["output"]["directory"].value<std::string>();
       return t["name"].value<std::string>() == run.id && output == kCampaignRunsFolder;
     } catch (const toml::parse_error&) {
@@ -344,8 +359,8 @@ std::string patch_scenario(const ScenarioBase& base, const CampaignDef& campaign
     if (reads_back(text)) return text;
   }
   toml::table table = base.table;
-  for (std::size_t p = 0; p < campaign.parameters.size(); ++p)
-    assign(table, campaign.parameters[p].key, run.values[p]);
+  for (const auto& [key, text] : values)
+    assign(table, key, text);
   table.insert_or_assign("name", run.id);
   if (!table.get("output") || !table.get("output")->is_table())
     table.insert_or_assign("output", toml::table{});
@@ -442,19 +457,8 @@ struct Varied {
   std::vector<const toml::node*> values;
 };
 
-}  // namespace
-
-CampaignDef load_campaign(const fs::path& file) {
-  SG_VERIFY(fs::exists(file), "campaign file '" << file.string() << "' does not exist");
-  toml::table doc;
-  try {
-    doc = toml::parse_file(file.string());
-  } catch (const toml::parse_error& e) {
-    SG_THROW(file.string() << ":" << e.source().begin.line << ":" << e.source().begin.column
-                           << ": TOML syntax error: " << e.description());
-  }
-  CampaignDef c;
-  c.file = file;
+// The campaign's own settings: name, base scenario, output, parallel, threads, analyze_options.
+void read_settings(const fs::path& file, const toml::table& doc, CampaignDef& c) {
   static const std::set<std::string> known = {"name",    "scenario",        "output", "parallel",
                                               "threads", "analyze_options", "grid",   "list"};
   for (const auto& [k, v] : doc)
@@ -491,10 +495,13 @@ CampaignDef load_campaign(const fs::path& file) {
       c.analyze_options.push_back(e.as_string()->get());
     }
   }
+}
 
-  // --- The varied parameters: [[list]] keys first, then [grid] keys, each in file order.
+// The [[list]] keys in file order, each with its value per entry; the number of entries.
+std::vector<Varied> read_list(const fs::path& file, const toml::table& doc,
+                              std::size_t& list_runs) {
   std::vector<Varied> varied;
-  std::size_t list_runs = 1;
+  list_runs = 1;
   if (const toml::node* n = doc.get("list")) {
     const auto* a = n->as_array();
     if (!a || !a->is_array_of_tables() || a->empty())
@@ -520,6 +527,11 @@ CampaignDef load_campaign(const fs::path& file) {
         v.values.push_back(by_key.at(v.key));
     }
   }
+  return varied;
+}
+
+// The [grid] keys in file order, each with its values.
+void read_grid(const fs::path& file, const toml::table& doc, std::vector<Varied>& varied) {
   if (const toml::node* n = doc.get("grid")) {
     const auto* t = n->as_table();
     if (!t) fail(file, line_of(*n), "grid", "", "expected a [grid] table of key = [values]");
@@ -534,6 +546,10 @@ CampaignDef load_campaign(const fs::path& file) {
       varied.push_back(std::move(v));
     }
   }
+}
+
+// Something to vary; no key set by sweep itself; no key varied twice (or inside another).
+void check_varied(const fs::path& file, const std::vector<Varied>& varied) {
   if (varied.empty()) SG_THROW(file.string() << ": no [grid] and no [[list]]: nothing to vary");
   for (std::size_t i = 0; i < varied.size(); ++i) {
     const std::string& key = varied[i].key;
@@ -545,11 +561,12 @@ CampaignDef load_campaign(const fs::path& file) {
         fail(file, varied[j].line, varied[j].key, varied[j].where,
              "also varied as '" + key + "' (line " + std::to_string(varied[i].line) + ")");
   }
+}
 
-  // --- The base scenario: every key must exist there, with a value of the same type.
+ScenarioBase read_base_scenario(const CampaignDef& c, const std::string& as_written) {
   ScenarioBase base;
   base.file = c.scenario;
-  base.as_written = scenario;
+  base.as_written = as_written;
   {
     std::ifstream in(c.scenario, std::ios::binary);
     std::ostringstream text;
@@ -562,9 +579,30 @@ CampaignDef load_campaign(const fs::path& file) {
     SG_THROW(c.scenario.string() << ":" << e.source().begin.line << ":" << e.source().begin.column
                                  << ": TOML syntax error: " << e.description());
   }
-  std::vector<std::vector<std::string>> texts(varied.size()), shown(varied.size());
+  return base;
+}
+
+// Each varied key checked against the base scenario; its values as TOML text (for the
+// scenario) and as shown in run ids. Fills c.parameters.
+void value_texts(const fs::path& file, const std::vector<Varied>& varied, const ScenarioBase& base,
+                 CampaignDef& c, std::vector<std::vector<std::string>>& texts,
+                 std::vector<std::vector<std::string>>& shown) {
+  texts.assign(varied.size(), {});
+  shown.assign(varied.size(), {});
   for (std::size_t p = 0; p < varied.size(); ++p) {
     const Varied& v = varied[p];
+    if (is_paper_coordinate(v.key)) {
+      for (const toml::node* value : v.values) {
+        if (!value->is_number())
+          fail(
+              file, line_of(*value), v.key, v.where,
+              "expected a number (a paper coordinate, log10 of a ratio), got " + toml_text(*value));
+        texts[p].push_back(format_double(value->value<double>().value(), true));
+        shown[p].push_back(file_safe(display_text(*value)));
+      }
+      c.parameters.push_back({v.key, "", v.line, true});
+      continue;
+    }
     const Resolved r = resolve(base.table, v.key);
     if (!r.node)
       fail(file, v.line, v.key, v.where,
@@ -583,11 +621,48 @@ CampaignDef load_campaign(const fs::path& file) {
       }));
       shown[p].push_back(file_safe(display_text(*value)));
     }
-    c.parameters.push_back({v.key, "", v.line});
+    c.parameters.push_back({v.key, "", v.line, false});
   }
-  assign_labels(c.parameters);
+}
 
-  // --- The runs: each [[list]] entry times the [grid] product, the first grid key slowest.
+// The paper coordinates' mapping (campaign/paper_coordinates.h), checked against the other
+// varied keys: a physical key may not be varied both ways.
+PaperFrame read_frame(const fs::path& file, const std::vector<Varied>& varied,
+                      const ScenarioBase& base, const CampaignDef& c) {
+  std::vector<std::string> used;
+  for (const Varied& v : varied)
+    if (is_paper_coordinate(v.key)) used.push_back(v.key);
+  if (used.empty()) return {};
+  const auto line_of_key = [&](const std::string& key) {
+    for (const Varied& v : varied)
+      if (v.key == key) return v;
+    return varied.front();
+  };
+  const PaperFrame frame = read_paper_frame(base.table, c.scenario, used,
+                                            [&](const std::string& key, const std::string& m) {
+                                              const Varied v = line_of_key(key);
+                                              fail(file, v.line, v.key, v.where, m);
+                                            });
+  for (const std::string& key : used)
+    for (const auto& [derived, value] : paper_values(frame, key, 0.0)) {
+      if (!resolve(base.table, derived).node) {
+        const Varied v = line_of_key(key);
+        fail(file, v.line, v.key, v.where,
+             "sets '" + derived + "', which the base scenario must write (e.g. at its default)");
+      }
+      for (const Varied& v : varied)
+        if (v.key == derived || derived.rfind(v.key + ".", 0) == 0)
+          fail(file, v.line, v.key, v.where,
+               "also set by '" + key + "' (line " + std::to_string(line_of_key(key).line) + ")");
+    }
+  return frame;
+}
+
+// The runs: each [[list]] entry times the [grid] product, the first grid key slowest.
+void expand_runs(const fs::path& file, const std::vector<Varied>& varied, std::size_t list_runs,
+                 const std::vector<std::vector<std::string>>& texts,
+                 const std::vector<std::vector<std::string>>& shown, const PaperFrame& frame,
+                 CampaignDef& c) {
   std::size_t grid_runs = 1;
   for (const Varied& v : varied)
     if (v.where == " in [grid]") grid_runs *= v.values.size();
@@ -613,9 +688,43 @@ CampaignDef load_campaign(const fs::path& file) {
     for (std::size_t p = 0; p < varied.size(); ++p) {
       run.values.push_back(texts[p][choice[p]]);
       run.id += "_" + c.parameters[p].label + "=" + shown[p][choice[p]];
+      if (c.parameters[p].paper_coordinate)
+        for (const auto& [key, value] :
+             paper_values(frame, varied[p].key, std::stod(texts[p][choice[p]])))
+          run.derived.emplace_back(key, format_double(value, true));
     }
     c.runs.push_back(std::move(run));
   }
+}
+
+}  // namespace
+
+CampaignDef load_campaign(const fs::path& file) {
+  SG_VERIFY(fs::exists(file), "campaign file '" << file.string() << "' does not exist");
+  toml::table doc;
+  try {
+    doc = toml::parse_file(file.string());
+  } catch (const toml::parse_error& e) {
+    SG_THROW(file.string() << ":" << e.source().begin.line << ":" << e.source().begin.column
+                           << ": TOML syntax error: " << e.description());
+  }
+  CampaignDef c;
+  c.file = file;
+  read_settings(file, doc, c);
+
+  // The varied parameters: [[list]] keys first, then [grid] keys, each in file order.
+  std::size_t list_runs = 1;
+  std::vector<Varied> varied = read_list(file, doc, list_runs);
+  read_grid(file, doc, varied);
+  check_varied(file, varied);
+
+  // The base scenario: every key must exist there, with a value of the same type.
+  const ScenarioBase base = read_base_scenario(c, string_value(file, doc, "scenario", ""));
+  std::vector<std::vector<std::string>> texts, shown;
+  value_texts(file, varied, base, c, texts, shown);
+  const PaperFrame frame = read_frame(file, varied, base, c);
+  assign_labels(c.parameters);
+  expand_runs(file, varied, list_runs, texts, shown, frame, c);
   for (CampaignRun& run : c.runs)
     run.scenario_text = patch_scenario(base, c, run);
   return c;

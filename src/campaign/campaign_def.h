@@ -12,6 +12,9 @@
 //   [[list]]                                # or explicit sets, one run each
 //   "time.duration" = 2.0
 //
+// or by the papers' coordinates stiffness_tilde, cohesion_tilde, viscosity_tilde, which set
+// the grain material's E, alpha and its contact laws' c (campaign/paper_coordinates.h).
+//
 // Each run's scenario is the base scenario's text with the varied values replaced in place
 // (comments and layout kept, so `diff base.toml runs/<id>/scenario.toml` shows exactly what
 // the campaign changed), `name` set to the run id and [output] directory to "runs", the
@@ -19,6 +22,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sg {
@@ -27,6 +31,9 @@ struct CampaignParameter {
   std::string key;       // dotted path into the scenario: "materials.0.young"
   std::string label;     // shortest unique tail of the key, used in run ids: "young"
   std::size_t line = 0;  // where the campaign file names it
+  // stiffness_tilde, cohesion_tilde or viscosity_tilde: not a scenario key, but the papers'
+  // coordinate that sets physical keys (campaign/paper_coordinates.h).
+  bool paper_coordinate = false;
 };
 
 struct CampaignRun {
@@ -34,6 +41,8 @@ struct CampaignRun {
   std::string id;  // stable and readable: "run-000_young=10_cohesion=0"
   // One per parameter, as TOML values ("10.0", "\"soft\"", "[0.0, -1.0]"); also the CSV cells.
   std::vector<std::string> values;
+  // The scenario keys its paper coordinates set, with their values as TOML text.
+  std::vector<std::pair<std::string, std::string>> derived;
   std::string scenario_text;  // the complete scenario file of this run
 };
 

@@ -166,27 +166,39 @@ void write_slurm_script(const CampaignDef& campaign, const fs::path& folder,
                   fs::perm_options::add);
 }
 
-// Draws mu over the first two parameters with scripts/plot_campaign.py, if Debian's python
-// with matplotlib is there; otherwise says how to do it.
+bool python_imports(const std::string& modules) {
+  return std::system(
+             (std::string(kPython) + " -c 'import " + modules + "' >/dev/null 2>&1").c_str()) == 0;
+}
+
+// Draws mu over the first two parameters and, with SciPy (interpolation, correlations), the
+// campaign figures (scripts/plot_campaign.py --all), if Debian's python with matplotlib is
+// there; otherwise says how to do it.
 void plot(const fs::path& folder, std::ostream* out) {
   const fs::path script = SOFTGRAIN_PLOT_CAMPAIGN_SCRIPT;
   const fs::path table = folder / "campaign.csv", map = folder / "mu_map.png";
-  const std::string command = std::string(kPython) + " " + shell_quoted(script.string()) + " " +
-                              shell_quoted(table.string()) + " -o " + shell_quoted(map.string());
-  const bool available =
-      fs::exists(script) && fs::exists(kPython) &&
-      std::system((std::string(kPython) + " -c 'import matplotlib' >/dev/null 2>&1").c_str()) == 0;
+  const bool available = fs::exists(script) && fs::exists(kPython) && python_imports("matplotlib");
   if (!available) {
     if (out)
       *out << "map: no " << kPython << " with matplotlib here; draw it elsewhere with\n  python3 "
-           << "scripts/plot_campaign.py " << table.string() << " -o " << map.string() << "\n";
+           << "scripts/plot_campaign.py " << table.string() << " -o " << map.string() << " --all\n";
     return;
   }
+  const bool figures = python_imports("scipy");
+  if (!figures && out)
+    *out << "figures: " << kPython << " has no scipy (Debian: python3-scipy): only the map\n";
+  const std::string command = std::string(kPython) + " " + shell_quoted(script.string()) + " " +
+                              shell_quoted(table.string()) + " -o " + shell_quoted(map.string()) +
+                              (figures ? " --all" : "");
   const fs::path log = folder / "plot.log";
   const int status = std::system((command + " > " + shell_quoted(log.string()) + " 2>&1").c_str());
   if (out) {
     if (status == 0)
-      *out << "map: " << map.string() << "\n";
+      *out << "map: " << map.string()
+           << (figures ? "; figures: campaign_points.png, mu_vs_stress.png, maps*.png, "
+                         "correlations.png, correlations.csv"
+                       : "")
+           << "\n";
     else
       *out << "map: plot_campaign.py failed (see " << log.string() << "):\n  " << command << "\n";
   }
@@ -197,6 +209,184 @@ void plot(const fs::path& folder, std::ostream* out) {
 fs::path campaign_run_folder(const fs::path& campaign_folder, const CampaignRun& run) {
   return campaign_folder / kCampaignRunsFolder / run.id;
 }
+
+namespace {
+
+// What the sweep knows of every run: its row of campaign.csv and its state.
+struct CampaignProgress {
+  std::vector<std::string> keys;  // the varied parameters' keys (campaign.csv columns)
+  std::vector<CampaignRow> rows;
+  std::vector<RunState> states;
+
+  std::size_t count(RunState s) const {
+    return static_cast<std::size_t>(std::count(states.begin(), states.end(), s));
+  }
+};
+
+CampaignProgress read_progress(const CampaignDef& campaign, const fs::path& folder) {
+  CampaignProgress progress;
+  // A paper coordinate's column says it is the requested value: summary.json's quantity of
+  // the same name (also a column) is the realized one.
+  for (const CampaignParameter& p : campaign.parameters)
+    progress.keys.push_back(p.paper_coordinate ? p.key + "_requested" : p.key);
+  for (const CampaignRun& run : campaign.runs) {
+    const fs::path dir = campaign_run_folder(folder, run);
+    progress.states.push_back(run_state(dir));
+    progress.rows.push_back(make_row(run, dir, progress.states.back()));
+  }
+  return progress;
+}
+
+void count_states(const CampaignProgress& progress, SweepResult& result) {
+  result.done = progress.count(RunState::done);
+  result.failed = progress.count(RunState::failed);
+  result.pending = progress.count(RunState::pending);
+}
+
+void list_runs(const CampaignDef& campaign, const fs::path& folder,
+               const CampaignProgress& progress, std::ostream& out) {
+  out << "campaign '" << campaign.name << "': " << campaign.runs.size()
+      << (campaign.runs.size() == 1 ? " run in " : " runs in ") << folder.string() << "\n";
+  for (std::size_t i = 0; i < campaign.runs.size(); ++i)
+    out << "  " << std::left << std::setw(8) << state_name(progress.states[i])
+        << campaign.runs[i].id << "\n";
+  out << "written: runs/<id>/scenario.toml, runs.txt, slurm-array.sh (nothing run)\n";
+}
+
+// The process jobs of the unfinished runs: simulate (from scratch, or resumed from the
+// checkpoint) unless series.csv is there, then analyse.
+struct CampaignJobs {
+  std::vector<ProcessJob> jobs;
+  std::vector<std::size_t> run_of;  // job -> run index
+  std::vector<bool> resumed;
+};
+
+ProcessJob run_job(const CampaignDef& campaign, const CampaignRun& run, const fs::path& folder,
+                   const SweepOptions& options, int threads, bool& resumed) {
+  const fs::path dir = campaign_run_folder(folder, run);
+  const std::string exe = options.executable.string();
+  const std::string thread_count = std::to_string(threads);
+  const std::string rel = std::string(kCampaignRunsFolder) + "/" + run.id;
+  fs::remove(dir / kFailedMarker);
+  ProcessJob job;
+  job.working_directory = folder;
+  job.log = dir / "sweep.log";
+  std::vector<std::string> simulate = {
+      exe, "--threads", thread_count, "run", rel + "/scenario.toml", "-o", kCampaignRunsFolder};
+  resumed = false;
+  if (fs::exists(dir / "series.csv")) {
+    // The simulation finished, its analysis did not: analyse only.
+  } else if (options.resume_from_checkpoints && fs::exists(dir / "checkpoint.bin") &&
+             fs::exists(dir / "series.csv.partial")) {
+    simulate.push_back("--resume");
+    job.steps.push_back(simulate);
+    resumed = true;
+  } else {
+    // From scratch: nothing of an interrupted attempt may survive into the new one.
+    std::vector<fs::path> stale;
+    for (const auto& entry : fs::directory_iterator(dir))
+      if (entry.path().filename() != "scenario.toml") stale.push_back(entry.path());
+    for (const fs::path& p : stale)
+      fs::remove_all(p);
+    job.steps.push_back(simulate);
+  }
+  std::vector<std::string> analyze = {exe, "--threads", thread_count, "analyze", rel};
+  analyze.insert(analyze.end(), campaign.analyze_options.begin(), campaign.analyze_options.end());
+  job.steps.push_back(analyze);
+  return job;
+}
+
+CampaignJobs make_jobs(const CampaignDef& campaign, const fs::path& folder,
+                       const CampaignProgress& progress, const SweepOptions& options, int threads) {
+  CampaignJobs jobs;
+  for (std::size_t i = 0; i < campaign.runs.size(); ++i) {
+    if (progress.states[i] == RunState::done) continue;
+    bool resumed = false;
+    jobs.jobs.push_back(run_job(campaign, campaign.runs[i], folder, options, threads, resumed));
+    jobs.run_of.push_back(i);
+    jobs.resumed.push_back(resumed);
+  }
+  return jobs;
+}
+
+// Why a job failed, for sweep.failed and the terminal; a resumed run that failed loses its
+// checkpoint (it would fail the same way every time).
+std::string failure_reason(const JobOutcome& o, const CampaignJobs& jobs, const fs::path& dir) {
+  const bool analyze_step = o.step + 1 == jobs.jobs[o.job].steps.size();
+  std::ostringstream why;
+  why << "`softgrain " << (analyze_step ? "analyze" : "run") << "` ";
+  if (o.success)
+    why << "wrote no " << kSummary;
+  else if (o.signal)
+    why << "was killed by signal " << o.signal;
+  else
+    why << "exited with status " << o.exit_code;
+  why << " after " << format_seconds(o.seconds) << "; log: " << (dir / "sweep.log").string();
+  if (jobs.resumed[o.job] && !analyze_step) {
+    fs::remove(dir / "checkpoint.bin");
+    why << " (resuming failed: the next sweep starts it from scratch)";
+  }
+  return why.str();
+}
+
+// Runs the jobs `parallel` at a time, rewriting campaign.csv after each; false if interrupted.
+bool run_jobs(const CampaignDef& campaign, const fs::path& folder, CampaignProgress& progress,
+              const CampaignJobs& jobs, int parallel, const fs::path& table, std::ostream* out) {
+  write_campaign_table(table, progress.keys, progress.rows);
+  const auto status = [&](std::size_t running) {
+    std::ostringstream s;
+    s << "[" << progress.count(RunState::done) << "/" << campaign.runs.size() << " done";
+    const std::size_t failed = progress.count(RunState::failed);
+    if (failed) s << ", " << failed << " failed";
+    s << ", " << running << " running]";
+    return s.str();
+  };
+  QueueEvents events;
+  events.started = [&](std::size_t job, std::size_t running) {
+    const std::size_t i = jobs.run_of[job];
+    progress.states[i] = RunState::pending;
+    if (out)
+      *out << status(running) << " " << campaign.runs[i].id
+           << (jobs.resumed[job] ? " resumed from its checkpoint" : " started") << std::endl;
+  };
+  events.finished = [&](const JobOutcome& o, std::size_t running) {
+    const std::size_t i = jobs.run_of[o.job];
+    const CampaignRun& run = campaign.runs[i];
+    const fs::path dir = campaign_run_folder(folder, run);
+    std::string message;
+    if (o.success && fs::exists(dir / kSummary)) {
+      progress.states[i] = RunState::done;
+      progress.rows[i] = make_row(run, dir, RunState::done);
+      message =
+          "finished in " + format_seconds(o.seconds) + " (" + format_mu(progress.rows[i]) + ")";
+    } else {
+      progress.states[i] = RunState::failed;
+      progress.rows[i] = make_row(run, dir, RunState::failed);
+      const std::string why = failure_reason(o, jobs, dir);
+      write_file_atomically(dir / kFailedMarker, why + "\n");
+      message = "FAILED: " + why;
+    }
+    write_campaign_table(table, progress.keys, progress.rows);
+    if (out) *out << status(running) << " " << run.id << " " << message << std::endl;
+  };
+  return run_process_queue(jobs.jobs, parallel, events);
+}
+
+void report_gathered(const CampaignDef& campaign, const fs::path& folder,
+                     const CampaignProgress& progress, const SweepResult& result,
+                     std::ostream& out) {
+  out << "campaign '" << campaign.name << "': " << result.done << " of " << result.runs
+      << " runs done";
+  if (result.failed) out << ", " << result.failed << " failed";
+  if (result.pending) out << ", " << result.pending << " not run";
+  out << "\ntable: " << result.table.string() << "\n";
+  for (std::size_t i = 0; i < campaign.runs.size(); ++i)
+    if (progress.states[i] == RunState::failed)
+      out << "  failed: " << campaign.runs[i].id << ": "
+          << read_text(campaign_run_folder(folder, campaign.runs[i]) / kFailedMarker);
+}
+
+}  // namespace
 
 SweepResult sweep_campaign(const CampaignDef& campaign, const SweepOptions& options) {
   std::ostream* out = options.out;
@@ -216,135 +406,24 @@ SweepResult sweep_campaign(const CampaignDef& campaign, const SweepOptions& opti
   result.folder = folder;
   result.table = folder / "campaign.csv";
   result.runs = campaign.runs.size();
-  std::vector<std::string> keys;
-  for (const CampaignParameter& p : campaign.parameters)
-    keys.push_back(p.key);
-  std::vector<CampaignRow> rows;
-  std::vector<RunState> states;
-  for (const CampaignRun& run : campaign.runs) {
-    const fs::path dir = campaign_run_folder(folder, run);
-    states.push_back(run_state(dir));
-    rows.push_back(make_row(run, dir, states.back()));
-  }
-  const auto count = [&](RunState s) {
-    return static_cast<std::size_t>(std::count(states.begin(), states.end(), s));
-  };
+  CampaignProgress progress = read_progress(campaign, folder);
 
   if (options.mode == SweepOptions::Mode::dry_run) {
     write_slurm_script(campaign, folder, options, threads);
-    if (out) {
-      *out << "campaign '" << campaign.name << "': " << campaign.runs.size()
-           << (campaign.runs.size() == 1 ? " run in " : " runs in ") << folder.string() << "\n";
-      for (std::size_t i = 0; i < campaign.runs.size(); ++i)
-        *out << "  " << std::left << std::setw(8) << state_name(states[i]) << campaign.runs[i].id
-             << "\n";
-      *out << "written: runs/<id>/scenario.toml, runs.txt, slurm-array.sh (nothing run)\n";
-    }
-    result.done = count(RunState::done);
-    result.failed = count(RunState::failed);
-    result.pending = count(RunState::pending);
+    if (out) list_runs(campaign, folder, progress, *out);
+    count_states(progress, result);
     return result;
   }
 
   if (options.mode == SweepOptions::Mode::run) {
-    std::vector<ProcessJob> jobs;
-    std::vector<std::size_t> job_run;  // job -> run index
-    std::vector<bool> job_resumed;
-    const std::string exe = options.executable.string();
-    const std::string thread_count = std::to_string(threads);
-    for (std::size_t i = 0; i < campaign.runs.size(); ++i) {
-      if (states[i] == RunState::done) continue;
-      const CampaignRun& run = campaign.runs[i];
-      const fs::path dir = campaign_run_folder(folder, run);
-      const std::string rel = std::string(kCampaignRunsFolder) + "/" + run.id;
-      fs::remove(dir / kFailedMarker);
-      ProcessJob job;
-      job.working_directory = folder;
-      job.log = dir / "sweep.log";
-      std::vector<std::string> simulate = {
-          exe, "--threads", thread_count, "run", rel + "/scenario.toml", "-o", kCampaignRunsFolder};
-      bool resumed = false;
-      if (fs::exists(dir / "series.csv")) {
-        // The simulation finished, its analysis did not: analyse only.
-      } else if (options.resume_from_checkpoints && fs::exists(dir / "checkpoint.bin") &&
-                 fs::exists(dir / "series.csv.partial")) {
-        simulate.push_back("--resume");
-        job.steps.push_back(simulate);
-        resumed = true;
-      } else {
-        // From scratch: nothing of an interrupted attempt may survive into the new one.
-        std::vector<fs::path> stale;
-        for (const auto& entry : fs::directory_iterator(dir))
-          if (entry.path().filename() != "scenario.toml") stale.push_back(entry.path());
-        for (const fs::path& p : stale)
-          fs::remove_all(p);
-        job.steps.push_back(simulate);
-      }
-      std::vector<std::string> analyze = {exe, "--threads", thread_count, "analyze", rel};
-      analyze.insert(analyze.end(), campaign.analyze_options.begin(),
-                     campaign.analyze_options.end());
-      job.steps.push_back(analyze);
-      jobs.push_back(std::move(job));
-      job_run.push_back(i);
-      job_resumed.push_back(resumed);
-    }
+    const CampaignJobs jobs = make_jobs(campaign, folder, progress, options, threads);
     if (out) {
       *out << "campaign '" << campaign.name << "': " << campaign.runs.size()
-           << (campaign.runs.size() == 1 ? " run (" : " runs (") << count(RunState::done)
-           << " done, " << jobs.size() << " to run), " << parallel << " at a time, " << threads
+           << (campaign.runs.size() == 1 ? " run (" : " runs (") << progress.count(RunState::done)
+           << " done, " << jobs.jobs.size() << " to run), " << parallel << " at a time, " << threads
            << " thread" << (threads > 1 ? "s" : "") << " each -> " << folder.string() << "\n";
     }
-    write_campaign_table(result.table, keys, rows);
-    const auto progress = [&](std::size_t running) {
-      std::ostringstream s;
-      s << "[" << count(RunState::done) << "/" << campaign.runs.size() << " done";
-      const std::size_t failed = count(RunState::failed);
-      if (failed) s << ", " << failed << " failed";
-      s << ", " << running << " running]";
-      return s.str();
-    };
-    QueueEvents events;
-    events.started = [&](std::size_t job, std::size_t running) {
-      const std::size_t i = job_run[job];
-      states[i] = RunState::pending;
-      if (out)
-        *out << progress(running) << " " << campaign.runs[i].id
-             << (job_resumed[job] ? " resumed from its checkpoint" : " started") << std::endl;
-    };
-    events.finished = [&](const JobOutcome& o, std::size_t running) {
-      const std::size_t i = job_run[o.job];
-      const CampaignRun& run = campaign.runs[i];
-      const fs::path dir = campaign_run_folder(folder, run);
-      std::string message;
-      if (o.success && fs::exists(dir / kSummary)) {
-        states[i] = RunState::done;
-        rows[i] = make_row(run, dir, RunState::done);
-        message = "finished in " + format_seconds(o.seconds) + " (" + format_mu(rows[i]) + ")";
-      } else {
-        states[i] = RunState::failed;
-        rows[i] = make_row(run, dir, RunState::failed);
-        const bool analyze_step = o.step + 1 == jobs[o.job].steps.size();
-        std::ostringstream why;
-        why << "`softgrain " << (analyze_step ? "analyze" : "run") << "` ";
-        if (o.success)
-          why << "wrote no " << kSummary;
-        else if (o.signal)
-          why << "was killed by signal " << o.signal;
-        else
-          why << "exited with status " << o.exit_code;
-        why << " after " << format_seconds(o.seconds) << "; log: " << (dir / "sweep.log").string();
-        if (job_resumed[o.job] && !analyze_step) {
-          // A checkpoint that cannot be resumed would fail the same way every time.
-          fs::remove(dir / "checkpoint.bin");
-          why << " (resuming failed: the next sweep starts it from scratch)";
-        }
-        write_file_atomically(dir / kFailedMarker, why.str() + "\n");
-        message = "FAILED: " + why.str();
-      }
-      write_campaign_table(result.table, keys, rows);
-      if (out) *out << progress(running) << " " << run.id << " " << message << std::endl;
-    };
-    result.interrupted = !run_process_queue(jobs, parallel, events);
+    result.interrupted = !run_jobs(campaign, folder, progress, jobs, parallel, result.table, out);
     if (result.interrupted && out)
       *out << "interrupted: the unfinished runs start again with the next `softgrain sweep "
            << campaign.file.string() << "`\n";
@@ -354,24 +433,12 @@ SweepResult sweep_campaign(const CampaignDef& campaign, const SweepOptions& opti
   for (std::size_t i = 0; i < campaign.runs.size(); ++i) {
     const fs::path dir = campaign_run_folder(folder, campaign.runs[i]);
     const RunState now = run_state(dir);
-    if (now != states[i]) rows[i] = make_row(campaign.runs[i], dir, now);
-    states[i] = now;
+    if (now != progress.states[i]) progress.rows[i] = make_row(campaign.runs[i], dir, now);
+    progress.states[i] = now;
   }
-  write_campaign_table(result.table, keys, rows);
-  result.done = count(RunState::done);
-  result.failed = count(RunState::failed);
-  result.pending = count(RunState::pending);
-  if (out) {
-    *out << "campaign '" << campaign.name << "': " << result.done << " of " << result.runs
-         << " runs done";
-    if (result.failed) *out << ", " << result.failed << " failed";
-    if (result.pending) *out << ", " << result.pending << " not run";
-    *out << "\ntable: " << result.table.string() << "\n";
-    for (std::size_t i = 0; i < campaign.runs.size(); ++i)
-      if (states[i] == RunState::failed)
-        *out << "  failed: " << campaign.runs[i].id << ": "
-             << read_text(campaign_run_folder(folder, campaign.runs[i]) / kFailedMarker);
-  }
+  write_campaign_table(result.table, progress.keys, progress.rows);
+  count_states(progress, result);
+  if (out) report_gathered(campaign, folder, progress, result, *out);
   if (options.plot && result.done > 0) plot(folder, out);
   return result;
 }

@@ -1,9 +1,12 @@
 #include "io/vtk_writer.h"
 
+#include <cmath>
 #include <iomanip>
+#include <limits>
 
 #include "io/atomic_file.h"
 #include "model/kinematics.h"
+#include "scenario/scenario.h"
 
 namespace sg {
 
@@ -12,11 +15,37 @@ namespace {
 struct NodalFields {
   std::vector<Vec2> position, displacement, velocity;
   std::vector<CauchyStress> stress;
-  std::vector<double> strain_norm;
+  std::vector<double> strain_norm, strain_rate;
   std::vector<int> body_id, material_id;
 };
 
-NodalFields evaluate_fields(const Model& model) {
+// The rate of the deformation gradient at a node, F' = sum_J v_J (x) grad0 N_J over the
+// node's own row (the velocity parameters, as F is built from the displacement parameters).
+Mat2 node_deformation_rate(const Model& model, const Body& body, std::size_t node) {
+  const ShapeRows& rows = model.node_rows;
+  Mat2 rate = Mat2::Zero();
+  for (auto k = static_cast<std::size_t>(rows.offset[node]);
+       k < static_cast<std::size_t>(rows.offset[node + 1]); ++k) {
+    const auto j = static_cast<std::size_t>(body.node_begin + rows.node[k]);
+    rate +=
+        Vec2(model.nodes.vx[j], model.nodes.vy[j]) * Vec2(rows.dndx[k], rows.dndy[k]).transpose();
+  }
+  return rate;
+}
+
+// d|E|/dt with E = (F^T F - I)/2 and E' = sym(F^T F'): E:E'/|E|, and |E'| where E = 0 (the
+// one-sided rate from the undeformed state). Zero for any rigid motion (F^T F' is then skew).
+double strain_norm_rate(const Mat2& F, const Mat2& F_rate) {
+  const Mat2 E = 0.5 * (F.transpose() * F - Mat2::Identity());
+  const Mat2 FtFr = F.transpose() * F_rate;
+  const Mat2 E_rate = 0.5 * (FtFr + FtFr.transpose());
+  const double norm = E.norm();
+  return norm > 1e-12 ? (E.array() * E_rate.array()).sum() / norm : E_rate.norm();
+}
+
+NodalFields evaluate_fields(const Model& model, double global_strain_rate) {
+  // Normalized by V/D where the caller knows it (a shear cell), else in 1/time.
+  const double rate_unit = global_strain_rate > 0.0 ? global_strain_rate : 1.0;
   NodalFields f;
   const std::size_t n = model.node_count();
   f.position.resize(n);
@@ -24,6 +53,7 @@ NodalFields evaluate_fields(const Model& model) {
   f.velocity.resize(n);
   f.stress.resize(n);
   f.strain_norm.resize(n);
+  f.strain_rate.resize(n);
   f.body_id.resize(n);
   f.material_id.resize(n);
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
@@ -38,6 +68,7 @@ NodalFields evaluate_fields(const Model& model) {
       const Mat2 grad = node_deformation_gradient(model, i);
       f.stress[k] = grad.determinant() > 0.0 ? cauchy_stress(m, grad) : CauchyStress{0, 0, 0, 0};
       f.strain_norm[k] = (0.5 * (grad.transpose() * grad - Mat2::Identity())).norm();
+      f.strain_rate[k] = strain_norm_rate(grad, node_deformation_rate(model, body, k)) / rate_unit;
       f.body_id[k] = static_cast<int>(b);
       f.material_id[k] = body.material;
     }
@@ -58,6 +89,7 @@ NodalFields evaluate_fields(const Model& model) {
       f.velocity.push_back(Vec2(model.rigid.vx[r], model.rigid.vy[r]) + omega * perp(x - c));
       f.stress.push_back(CauchyStress{0, 0, 0, 0});
       f.strain_norm.push_back(0.0);
+      f.strain_rate.push_back(0.0);
       f.body_id.push_back(static_cast<int>(b));
       f.material_id.push_back(body.material);
     }
@@ -83,8 +115,16 @@ void vector_array(std::ostream& out, const char* name, const std::vector<Vec2>& 
 
 }  // namespace
 
-void write_vtu_snapshot(const Model& model, const std::filesystem::path& path) {
-  const NodalFields f = evaluate_fields(model);
+double global_strain_rate(const ScenarioDef& scenario) {
+  const auto& cell = scenario.shear_cell;
+  if (!cell || cell->normal_load != NormalLoad::gap || !(cell->gap > 0.0))
+    return std::numeric_limits<double>::quiet_NaN();
+  return cell->velocity / cell->gap;
+}
+
+void write_vtu_snapshot(const Model& model, const std::filesystem::path& path,
+                        double global_strain_rate) {
+  const NodalFields f = evaluate_fields(model, global_strain_rate);
   const std::size_t n = f.position.size();
   // Cells: the triangles of deformable bodies, then one polygon per rigid body (its contour
   // points follow the field nodes in the point list).
@@ -140,6 +180,7 @@ void write_vtu_snapshot(const Model& model, const std::filesystem::path& path) {
     scalar_array(out, "von_mises", n, [&](std::size_t i) { return f.stress[i].von_mises(); });
     scalar_array(out, "pressure", n, [&](std::size_t i) { return f.stress[i].pressure(); });
     scalar_array(out, "green_lagrange_norm", n, [&](std::size_t i) { return f.strain_norm[i]; });
+    scalar_array(out, "strain_rate", n, [&](std::size_t i) { return f.strain_rate[i]; });
     scalar_array(out, "body_id", n, [&](std::size_t i) { return f.body_id[i]; });
     scalar_array(out, "material_id", n, [&](std::size_t i) { return f.material_id[i]; });
     out << "      </PointData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";

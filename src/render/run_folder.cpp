@@ -140,12 +140,10 @@ RunInfo read_run_info(const std::filesystem::path& run_dir) {
     info.periodic = std::make_pair(0.0, s.shear_cell->length);
     info.parameters.length = s.shear_cell->length;
     info.parameters.velocity = s.shear_cell->velocity;
-    if (s.shear_cell->gap > 0.0)
+    // D is the scenario's under gap loading; an output under pressure loading or with
+    // gap = 0 (90% of the packed height), measured by `analyze` from series.csv.
+    if (s.shear_cell->normal_load == NormalLoad::gap && s.shear_cell->gap > 0.0)
       info.parameters.gap = s.shear_cell->gap;
-    else
-      info.notes.push_back(
-          "gap D: the scenario lets the shear cell choose it (gap = 0); pass "
-          "--gap");
   } else if (s.periodic_x) {
     info.periodic = std::make_pair(s.x_min, s.x_max);
     info.parameters.length = s.x_max - s.x_min;

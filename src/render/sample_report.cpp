@@ -228,19 +228,12 @@ void measure_gaps(const Model& model, SampleReport& r) {
   if (r.overlapping_pairs > 0) r.smallest_gap = -deepest;
 }
 
-SampleReport measure_sample(const ScenarioDef& scenario, Model& model) {
-  SampleReport r;
-  r.name = scenario.name;
-  r.builder = scenario.compaction_box ? "compaction_box"
-              : scenario.shear_cell   ? "shear_cell"
-                                      : "explicit";
-  r.bodies = model.bodies.size();
-  r.nodes = model.node_count();
-  r.gauss_points = model.gauss_point_count();
-  r.contour_points = model.contour_point_count();
-  r.triangles = model.triangles.size();
+namespace {
 
-  // Grains: the builders' grain_<i>, and the explicit [[grains]].
+// The grains (the builders' grain_<i> and the explicit [[grains]]) among the bodies, and
+// their areas at t = 0 (0 for the other bodies).
+std::vector<double> count_grains(const ScenarioDef& scenario, const Model& model,
+                                 const std::vector<Vec2>& positions, SampleReport& r) {
   std::set<std::string> grain_names;
   for (const GrainSpec& g : scenario.grains)
     grain_names.insert(g.name);
@@ -249,8 +242,6 @@ SampleReport measure_sample(const ScenarioDef& scenario, Model& model) {
                                             : 0;
   for (int i = 0; i < built; ++i)
     grain_names.insert("grain_" + std::to_string(i));
-  std::vector<Vec2> positions;
-  compute_contour_positions(model, positions);
   std::vector<double> body_area(model.bodies.size(), 0.0);
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
     const Body& body = model.bodies[b];
@@ -265,15 +256,20 @@ SampleReport measure_sample(const ScenarioDef& scenario, Model& model) {
     body_area[b] = signed_area(body_contour(model, positions, b));
     r.grain_area += body_area[b];
   }
+  return body_area;
+}
 
-  // The container at t = 0, read off the built bodies.
-  auto find_body = [&](const std::string& name) -> int {
-    for (std::size_t b = 0; b < model.bodies.size(); ++b)
-      if (model.bodies[b].name == name) return static_cast<int>(b);
-    return -1;
-  };
+int find_body(const Model& model, const std::string& name) {
+  for (std::size_t b = 0; b < model.bodies.size(); ++b)
+    if (model.bodies[b].name == name) return static_cast<int>(b);
+  return -1;
+}
+
+// The container at t = 0, read off the built bodies; the shear cell's roughness.
+void measure_container(const ScenarioDef& scenario, const Model& model,
+                       const std::vector<Vec2>& positions, SampleReport& r) {
   auto contour_of = [&](const std::string& name) {
-    const int b = find_body(name);
+    const int b = find_body(model, name);
     SG_VERIFY(b >= 0, "sample: no body named '" << name << "'");
     return body_contour(model, positions, static_cast<std::size_t>(b));
   };
@@ -313,9 +309,11 @@ SampleReport measure_sample(const ScenarioDef& scenario, Model& model) {
       r.roughness.push_back(g);
     }
   }
-  if (r.container_area > 0.0) r.solid_fraction = r.grain_area / r.container_area;
+}
 
-  // Sizes: requested law vs the generator's draws, per component.
+// Sizes: requested law vs the generator's draws, per component.
+void measure_sizes(const ScenarioDef& scenario, const Model& model,
+                   const std::vector<double>& body_area, SampleReport& r) {
   MixtureDef mixture;
   const std::vector<GrainDef> grains = regenerated_grains(scenario, mixture);
   if (grains.empty()) {
@@ -325,7 +323,7 @@ SampleReport measure_sample(const ScenarioDef& scenario, Model& model) {
     std::vector<std::vector<double>> drawn(mixture.components.size()),
         area_diameter(mixture.components.size());
     for (std::size_t i = 0; i < grains.size(); ++i) {
-      const int b = find_body("grain_" + std::to_string(i));
+      const int b = find_body(model, "grain_" + std::to_string(i));
       const double area = b >= 0 ? body_area[static_cast<std::size_t>(b)] : 0.0;
       const double generated = signed_area(grains[i].contour);
       if (!(std::abs(area - generated) <= 1e-9 * generated)) consistent = false;
@@ -360,10 +358,10 @@ SampleReport measure_sample(const ScenarioDef& scenario, Model& model) {
       r.sizes.push_back(s);
     }
   }
+}
 
-  measure_gaps(model, r);
-
-  // Step, mass scaling and memory: as `softgrain info` computes them (app/commands/info).
+// Step, mass scaling and memory: as `softgrain info` computes them (app/commands/info).
+void measure_step(const ScenarioDef& scenario, Model& model, SampleReport& r) {
   double contact_stiffness = 0.0;
   if (!scenario.contact_laws.empty())
     contact_stiffness =
@@ -384,6 +382,30 @@ SampleReport measure_sample(const ScenarioDef& scenario, Model& model) {
                        static_cast<double>(model.gauss_rows.entries()) * (4 * sizeof(double) + 4) +
                        static_cast<double>(model.node_rows.entries()) * (4 * sizeof(double) + 4);
   r.memory_mib = bytes / 1048576.0;
+}
+
+}  // namespace
+
+SampleReport measure_sample(const ScenarioDef& scenario, Model& model) {
+  SampleReport r;
+  r.name = scenario.name;
+  r.builder = scenario.compaction_box ? "compaction_box"
+              : scenario.shear_cell   ? "shear_cell"
+                                      : "explicit";
+  r.bodies = model.bodies.size();
+  r.nodes = model.node_count();
+  r.gauss_points = model.gauss_point_count();
+  r.contour_points = model.contour_point_count();
+  r.triangles = model.triangles.size();
+
+  std::vector<Vec2> positions;
+  compute_contour_positions(model, positions);
+  const std::vector<double> body_area = count_grains(scenario, model, positions, r);
+  measure_container(scenario, model, positions, r);
+  if (r.container_area > 0.0) r.solid_fraction = r.grain_area / r.container_area;
+  measure_sizes(scenario, model, body_area, r);
+  measure_gaps(model, r);
+  measure_step(scenario, model, r);
   return r;
 }
 

@@ -88,6 +88,7 @@ std::string unit_of(const std::string& field) {
   if (field.rfind("velocity", 0) == 0) return "length/time";
   if (field.rfind("displacement", 0) == 0) return "length";
   if (field == "green_lagrange_norm") return "1";
+  if (field == "strain_rate") return "V/D";
   if (field == "von_mises" || field == "pressure" || field.rfind("sigma_", 0) == 0) return "stress";
   return "";
 }
@@ -208,25 +209,10 @@ std::array<Vec2, 3> triangle_points(const VtuMesh& m, std::span<const int> cell,
   return p;
 }
 
-void draw_frame(cairo_t* cr, const Layout& l, const Style& s, const Frame& f) {
-  const VtuMesh& m = *f.mesh;
-  const std::vector<double> value = point_scalar(m, s.field == "body" ? "body_id" : s.field);
-  const std::vector<double> body = point_scalar(m, "body_id");
+// Rigid bodies: filled polygons, coloured by the field where it is defined on them.
+void draw_rigid_bodies(cairo_t* cr, const Layout& l, const Style& s, const VtuMesh& m,
+                       const std::vector<double>& value, const std::vector<double>& body) {
   const bool rigid_coloured = field_defined_on_rigid(s.field);
-
-  cairo_save(cr);
-  cairo_rectangle(cr, l.plot_x0, l.plot_y0, l.plot_x1 - l.plot_x0, l.plot_y1 - l.plot_y0);
-  cairo_clip(cr);
-  if (s.periodic) {
-    // The period: a light band, so that the seam-wrapped cell reads as one.
-    const double xa = l.px(s.periodic->first), xb = l.px(s.periodic->second);
-    cairo_rectangle(cr, xa, l.py(l.world.y1), xb - xa, l.py(l.world.y0) - l.py(l.world.y1));
-    cairo_set_source_rgb(cr, 0.965, 0.965, 0.965);
-    cairo_fill_preserve(cr);
-    cairo_clip(cr);
-  }
-
-  // Rigid bodies: filled polygons.
   for (std::size_t c = 0; c < m.cell_count(); ++c) {
     if (m.types[c] != kVtkPolygon) continue;
     const auto cell = m.cell(c);
@@ -256,96 +242,126 @@ void draw_frame(cairo_t* cr, const Layout& l, const Style& s, const Frame& f) {
       cairo_stroke(cr);
     }
   }
+}
 
-  // Deformable grains: one mesh-pattern patch per triangle (and per periodic image).
-  if (s.categorical) {
-    // Flat colour per body: all its triangles as one path, so no seams show between them.
-    std::unordered_map<int, std::vector<std::size_t>> by_body;
-    for (std::size_t c = 0; c < m.cell_count(); ++c)
-      if (m.types[c] == kVtkTriangle)
-        by_body[static_cast<int>(std::lround(body[static_cast<std::size_t>(m.cell(c)[0])]))]
-            .push_back(c);
-    for (const auto& [id, cells] : by_body) {
-      cairo_new_path(cr);
-      for (std::size_t c : cells) {
-        const auto p = triangle_points(m, m.cell(c), s);
-        const double x0 = std::min({p[0].x(), p[1].x(), p[2].x()});
-        const double x1 = std::max({p[0].x(), p[1].x(), p[2].x()});
-        for (double shift : shifts_for(s, x0, x1)) {
-          cairo_move_to(cr, l.px(p[0].x() + shift), l.py(p[0].y()));
-          cairo_line_to(cr, l.px(p[1].x() + shift), l.py(p[1].y()));
-          cairo_line_to(cr, l.px(p[2].x() + shift), l.py(p[2].y()));
-          cairo_close_path(cr);
-        }
-      }
-      const Rgb c = category_colour(id);
-      cairo_set_source_rgb(cr, c.r, c.g, c.b);
-      cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
-      cairo_fill(cr);
-    }
-  } else {
-    cairo_pattern_t* mesh = cairo_pattern_create_mesh();
-    bool any = false;
-    for (std::size_t c = 0; c < m.cell_count(); ++c) {
-      if (m.types[c] != kVtkTriangle) continue;
-      const auto cell = m.cell(c);
-      const auto p = triangle_points(m, cell, s);
+// Deformable grains, one flat colour per body: all its triangles as one path, so no seams
+// show between them.
+void draw_flat_grains(cairo_t* cr, const Layout& l, const Style& s, const VtuMesh& m,
+                      const std::vector<double>& body) {
+  std::unordered_map<int, std::vector<std::size_t>> by_body;
+  for (std::size_t c = 0; c < m.cell_count(); ++c)
+    if (m.types[c] == kVtkTriangle)
+      by_body[static_cast<int>(std::lround(body[static_cast<std::size_t>(m.cell(c)[0])]))]
+          .push_back(c);
+  for (const auto& [id, cells] : by_body) {
+    cairo_new_path(cr);
+    for (std::size_t c : cells) {
+      const auto p = triangle_points(m, m.cell(c), s);
       const double x0 = std::min({p[0].x(), p[1].x(), p[2].x()});
       const double x1 = std::max({p[0].x(), p[1].x(), p[2].x()});
       for (double shift : shifts_for(s, x0, x1)) {
-        cairo_mesh_pattern_begin_patch(mesh);
-        cairo_mesh_pattern_move_to(mesh, l.px(p[0].x() + shift), l.py(p[0].y()));
-        cairo_mesh_pattern_line_to(mesh, l.px(p[1].x() + shift), l.py(p[1].y()));
-        cairo_mesh_pattern_line_to(mesh, l.px(p[2].x() + shift), l.py(p[2].y()));
-        for (unsigned k = 0; k < 3; ++k) {
-          const Rgb col = colour_of(s, value[static_cast<std::size_t>(cell[k])]);
-          cairo_mesh_pattern_set_corner_color_rgb(mesh, k, col.r, col.g, col.b);
-        }
-        cairo_mesh_pattern_end_patch(mesh);
-        any = true;
+        cairo_move_to(cr, l.px(p[0].x() + shift), l.py(p[0].y()));
+        cairo_line_to(cr, l.px(p[1].x() + shift), l.py(p[1].y()));
+        cairo_line_to(cr, l.px(p[2].x() + shift), l.py(p[2].y()));
+        cairo_close_path(cr);
       }
     }
-    if (any) {
-      cairo_set_source(cr, mesh);
-      cairo_paint(cr);
-    }
-    cairo_pattern_destroy(mesh);
+    const Rgb c = category_colour(id);
+    cairo_set_source_rgb(cr, c.r, c.g, c.b);
+    cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+    cairo_fill(cr);
   }
+}
 
-  // Grain outlines: triangle edges used once within a body are its boundary.
-  {
-    std::unordered_map<std::uint64_t, int> edge_count;
-    auto key = [](int a, int b) {
-      if (a > b) std::swap(a, b);
-      return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-             static_cast<std::uint32_t>(b);
-    };
-    for (std::size_t c = 0; c < m.cell_count(); ++c) {
-      if (m.types[c] != kVtkTriangle) continue;
-      const auto cell = m.cell(c);
-      for (int k = 0; k < 3; ++k)
-        ++edge_count[key(cell[static_cast<std::size_t>(k)],
-                         cell[static_cast<std::size_t>((k + 1) % 3)])];
-    }
-    cairo_new_path(cr);
-    for (const auto& [e, count] : edge_count) {
-      if (count != 1) continue;
-      Vec2 a = m.points[static_cast<std::size_t>(e >> 32)];
-      Vec2 b = m.points[static_cast<std::size_t>(e & 0xffffffffu)];
-      if (s.periodic) {
-        const double L = s.periodic->second - s.periodic->first;
-        b.x() -= L * std::round((b.x() - a.x()) / L);
+// Deformable grains shaded by the field: one mesh-pattern patch per triangle (and per
+// periodic image).
+void draw_shaded_grains(cairo_t* cr, const Layout& l, const Style& s, const VtuMesh& m,
+                        const std::vector<double>& value) {
+  cairo_pattern_t* mesh = cairo_pattern_create_mesh();
+  bool any = false;
+  for (std::size_t c = 0; c < m.cell_count(); ++c) {
+    if (m.types[c] != kVtkTriangle) continue;
+    const auto cell = m.cell(c);
+    const auto p = triangle_points(m, cell, s);
+    const double x0 = std::min({p[0].x(), p[1].x(), p[2].x()});
+    const double x1 = std::max({p[0].x(), p[1].x(), p[2].x()});
+    for (double shift : shifts_for(s, x0, x1)) {
+      cairo_mesh_pattern_begin_patch(mesh);
+      cairo_mesh_pattern_move_to(mesh, l.px(p[0].x() + shift), l.py(p[0].y()));
+      cairo_mesh_pattern_line_to(mesh, l.px(p[1].x() + shift), l.py(p[1].y()));
+      cairo_mesh_pattern_line_to(mesh, l.px(p[2].x() + shift), l.py(p[2].y()));
+      for (unsigned k = 0; k < 3; ++k) {
+        const Rgb col = colour_of(s, value[static_cast<std::size_t>(cell[k])]);
+        cairo_mesh_pattern_set_corner_color_rgb(mesh, k, col.r, col.g, col.b);
       }
-      for (double shift : shifts_for(s, std::min(a.x(), b.x()), std::max(a.x(), b.x()))) {
-        cairo_move_to(cr, l.px(a.x() + shift), l.py(a.y()));
-        cairo_line_to(cr, l.px(b.x() + shift), l.py(b.y()));
-      }
+      cairo_mesh_pattern_end_patch(mesh);
+      any = true;
     }
-    cairo_set_source_rgba(cr, 0.1, 0.1, 0.1, 0.75);
-    cairo_set_line_width(cr, std::clamp(l.scale * 0.012, 0.6, 1.5));
-    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-    cairo_stroke(cr);
   }
+  if (any) {
+    cairo_set_source(cr, mesh);
+    cairo_paint(cr);
+  }
+  cairo_pattern_destroy(mesh);
+}
+
+// Grain outlines: triangle edges used once within a body are its boundary.
+void draw_outlines(cairo_t* cr, const Layout& l, const Style& s, const VtuMesh& m) {
+  std::unordered_map<std::uint64_t, int> edge_count;
+  auto key = [](int a, int b) {
+    if (a > b) std::swap(a, b);
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+           static_cast<std::uint32_t>(b);
+  };
+  for (std::size_t c = 0; c < m.cell_count(); ++c) {
+    if (m.types[c] != kVtkTriangle) continue;
+    const auto cell = m.cell(c);
+    for (int k = 0; k < 3; ++k)
+      ++edge_count[key(cell[static_cast<std::size_t>(k)],
+                       cell[static_cast<std::size_t>((k + 1) % 3)])];
+  }
+  cairo_new_path(cr);
+  for (const auto& [e, count] : edge_count) {
+    if (count != 1) continue;
+    Vec2 a = m.points[static_cast<std::size_t>(e >> 32)];
+    Vec2 b = m.points[static_cast<std::size_t>(e & 0xffffffffu)];
+    if (s.periodic) {
+      const double L = s.periodic->second - s.periodic->first;
+      b.x() -= L * std::round((b.x() - a.x()) / L);
+    }
+    for (double shift : shifts_for(s, std::min(a.x(), b.x()), std::max(a.x(), b.x()))) {
+      cairo_move_to(cr, l.px(a.x() + shift), l.py(a.y()));
+      cairo_line_to(cr, l.px(b.x() + shift), l.py(b.y()));
+    }
+  }
+  cairo_set_source_rgba(cr, 0.1, 0.1, 0.1, 0.75);
+  cairo_set_line_width(cr, std::clamp(l.scale * 0.012, 0.6, 1.5));
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  cairo_stroke(cr);
+}
+
+void draw_frame(cairo_t* cr, const Layout& l, const Style& s, const Frame& f) {
+  const VtuMesh& m = *f.mesh;
+  const std::vector<double> value = point_scalar(m, s.field == "body" ? "body_id" : s.field);
+  const std::vector<double> body = point_scalar(m, "body_id");
+
+  cairo_save(cr);
+  cairo_rectangle(cr, l.plot_x0, l.plot_y0, l.plot_x1 - l.plot_x0, l.plot_y1 - l.plot_y0);
+  cairo_clip(cr);
+  if (s.periodic) {
+    // The period: a light band, so that the seam-wrapped cell reads as one.
+    const double xa = l.px(s.periodic->first), xb = l.px(s.periodic->second);
+    cairo_rectangle(cr, xa, l.py(l.world.y1), xb - xa, l.py(l.world.y0) - l.py(l.world.y1));
+    cairo_set_source_rgb(cr, 0.965, 0.965, 0.965);
+    cairo_fill_preserve(cr);
+    cairo_clip(cr);
+  }
+  draw_rigid_bodies(cr, l, s, m, value, body);
+  if (s.categorical)
+    draw_flat_grains(cr, l, s, m, body);
+  else
+    draw_shaded_grains(cr, l, s, m, value);
+  draw_outlines(cr, l, s, m);
   cairo_restore(cr);
 }
 
@@ -509,7 +525,9 @@ std::pair<double, double> field_range(const std::vector<VtuMesh>& meshes,
   return {lo, hi};
 }
 
-RenderResult render_run(const fs::path& run_dir, const RenderOptions& options) {
+namespace {
+
+void check_options(const RenderOptions& options) {
   SG_VERIFY(options.width >= 64 && options.height >= 64 && options.width <= 16384 &&
                 options.height <= 16384,
             "render: picture size " << options.width << "x" << options.height
@@ -518,6 +536,113 @@ RenderResult render_run(const fs::path& run_dir, const RenderOptions& options) {
     SG_VERIFY(options.range->second > options.range->first,
               "render: --range " << options.range->first << " " << options.range->second
                                  << ": MAX must exceed MIN");
+}
+
+// Pass 1, over every frame: the drawing box, and (for a field read from the .vtu with no
+// given range) the range of the coloured values with every value for the robust range.
+struct SeriesExtent {
+  Bounds world;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  std::vector<double> values;
+};
+
+SeriesExtent measure_series(const std::vector<PvdEntry>& entries, const Style& style,
+                            const RenderOptions& options, const fs::path& pvd) {
+  SeriesExtent e;
+  const bool coherence = options.field == "coherence";
+  for (const auto& entry : entries) {
+    const VtuMesh m = read_vtu(entry.file);
+    for (const Vec2& p : m.points)
+      e.world.add(p);
+    if (coherence) continue;  // computed from the grain snapshots below; range fixed
+    if (!style.categorical && !options.range)
+      accumulate_range(m, options.field, e.lo, e.hi, &e.values);
+    else
+      (void)point_scalar(m, options.field);  // fail early on an unknown field
+  }
+  SG_VERIFY(!e.world.empty(), pvd.string() << ": the snapshots hold no point");
+  if (options.periodic) {
+    e.world.x0 = options.periodic->first;
+    e.world.x1 = options.periodic->second;
+  }
+  return e;
+}
+
+// The colour range: given, else robust, else full (with a hint when it is dominated by
+// outliers); C is always [-1, 1].
+void choose_range(SeriesExtent& e, Style& style, const RenderOptions& options,
+                  RenderResult& result) {
+  const bool coherence = options.field == "coherence";
+  double lo = e.lo, hi = e.hi;
+  if (coherence) {
+    // C lies in [-1, 1] (Cauchy-Schwarz, coherence.h): one fixed range for every run.
+    lo = -1.0;
+    hi = 1.0;
+  }
+  if (options.range) {
+    lo = options.range->first;
+    hi = options.range->second;
+  } else if (!e.values.empty() && !coherence) {
+    const double q01 = quantile(e.values, 0.01), q99 = quantile(e.values, 0.99);
+    if (options.robust_range) {
+      lo = q01;
+      hi = q99;
+    } else if (hi > lo && q99 - q01 < 0.2 * (hi - lo)) {
+      result.note = "98% of the values lie in [" + format_number(q01) + ", " + format_number(q99) +
+                    "], a fifth of the full range: try --robust or --range";
+    }
+  }
+  SG_VERIFY(hi >= lo, "field '" << options.field << "': no point of any snapshot is coloured by it"
+                                << " (rigid bodies only?)");
+  style.lo = lo;
+  style.hi = hi;
+  result.has_range = true;
+  result.range_min = lo;
+  result.range_max = hi;
+}
+
+// A small margin so that outlines on the box's edge are not cut.
+Bounds with_margin(Bounds world, bool periodic) {
+  const double margin = 0.01 * std::max(world.x1 - world.x0, world.y1 - world.y0);
+  if (!periodic) {
+    world.x0 -= margin;
+    world.x1 += margin;
+  }
+  world.y0 -= margin;
+  world.y1 += margin;
+  return world;
+}
+
+void add_note(RenderResult& result, const std::string& n) {
+  result.note += (result.note.empty() ? "" : "; ") + n;
+}
+
+// The movie: ffmpeg if present; frames must be numbered consecutively.
+void make_movie(const std::vector<PvdEntry>& entries, const RenderOptions& options,
+                const fs::path& out_dir, RenderResult& result) {
+  if (!options.movie || result.images.size() < 2) {
+    if (options.movie) add_note(result, "one frame: no movie");
+  } else if (!on_path("ffmpeg")) {
+    add_note(result, "ffmpeg not found on PATH: no movie (the PNG frames are written)");
+  } else {
+    const fs::path mp4 = out_dir / (options.field + ".mp4");
+    const std::string start = entries.front().file.stem().string();
+    std::ostringstream cmd;
+    cmd << "ffmpeg -y -loglevel error -framerate 8 -start_number " << std::stoi(start) << " -i '"
+        << (out_dir / (options.field + "_%06d.png")).string()
+        << "' -vf 'scale=trunc(iw/2)*2:trunc(ih/2)*2' -pix_fmt yuv420p -vcodec libx264 '"
+        << mp4.string() << "' < /dev/null";
+    if (std::system(cmd.str().c_str()) == 0)
+      result.movie = mp4;
+    else
+      add_note(result, "ffmpeg failed: no movie (command: " + cmd.str() + ")");
+  }
+}
+
+}  // namespace
+
+RenderResult render_run(const fs::path& run_dir, const RenderOptions& options) {
+  check_options(options);
   const fs::path pvd = run_dir / "fields.pvd";
   SG_VERIFY(fs::exists(pvd), "'" << run_dir.string() << "' has no fields.pvd: not a run folder, "
                                  << "or the run wrote no field snapshot");
@@ -532,65 +657,15 @@ RenderResult render_run(const fs::path& run_dir, const RenderOptions& options) {
   style.periodic = options.periodic;
   style.title = options.title;
 
-  // Pass 1, over every frame: the drawing box and the colour range, fixed for the series.
-  Bounds world;
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  std::vector<double> values;  // every coloured value, for the robust range and the hint
-  for (const auto& e : entries) {
-    const VtuMesh m = read_vtu(e.file);
-    for (const Vec2& p : m.points)
-      world.add(p);
-    if (coherence) continue;  // computed from the grain snapshots below; range fixed
-    if (!style.categorical && !options.range)
-      accumulate_range(m, options.field, lo, hi, &values);
-    else
-      (void)point_scalar(m, options.field);  // fail early on an unknown field
-  }
-  SG_VERIFY(!world.empty(), pvd.string() << ": the snapshots hold no point");
-  if (options.periodic) {
-    world.x0 = options.periodic->first;
-    world.x1 = options.periodic->second;
-  }
+  // Pass 1: the drawing box and the colour range, fixed for the series.
+  SeriesExtent extent = measure_series(entries, style, options, pvd);
   RenderResult result;
   std::vector<std::vector<double>> coherence_by_frame;
-  if (coherence) {
-    coherence_by_frame = grain_coherence(run_dir, entries, options, result.note);
-    // C lies in [-1, 1] (Cauchy-Schwarz, coherence.h): one fixed range for every run.
-    lo = -1.0;
-    hi = 1.0;
-  }
-  if (!style.categorical) {
-    if (options.range) {
-      lo = options.range->first;
-      hi = options.range->second;
-    } else if (!values.empty() && !coherence) {
-      const double q01 = quantile(values, 0.01), q99 = quantile(values, 0.99);
-      if (options.robust_range) {
-        lo = q01;
-        hi = q99;
-      } else if (hi > lo && q99 - q01 < 0.2 * (hi - lo)) {
-        result.note = "98% of the values lie in [" + format_number(q01) + ", " +
-                      format_number(q99) + "], a fifth of the full range: try --robust or --range";
-      }
-    }
-    SG_VERIFY(hi >= lo, "field '" << options.field
-                                  << "': no point of any snapshot is coloured by it"
-                                  << " (rigid bodies only?)");
-    style.lo = lo;
-    style.hi = hi;
-    result.has_range = true;
-    result.range_min = lo;
-    result.range_max = hi;
-  }
-  // A small margin so that outlines on the box's edge are not cut.
-  const double margin = 0.01 * std::max(world.x1 - world.x0, world.y1 - world.y0);
-  if (!options.periodic) {
-    world.x0 -= margin;
-    world.x1 += margin;
-  }
-  world.y0 -= margin;
-  world.y1 += margin;
-  const Layout layout = make_layout(options.width, options.height, world, !style.categorical);
+  if (coherence) coherence_by_frame = grain_coherence(run_dir, entries, options, result.note);
+  if (!style.categorical) choose_range(extent, style, options, result);
+  const Layout layout =
+      make_layout(options.width, options.height,
+                  with_margin(extent.world, options.periodic.has_value()), !style.categorical);
 
   // Pass 2: the pictures.
   const fs::path out_dir = run_dir / "render";
@@ -605,28 +680,7 @@ RenderResult render_run(const fs::path& run_dir, const RenderOptions& options) {
     write_png(layout, style, frame, png);
     result.images.push_back(png);
   }
-
-  // The movie: ffmpeg if present; frames must be numbered consecutively.
-  auto add_note = [&](const std::string& n) {
-    result.note += (result.note.empty() ? "" : "; ") + n;
-  };
-  if (!options.movie || result.images.size() < 2) {
-    if (options.movie) add_note("one frame: no movie");
-  } else if (!on_path("ffmpeg")) {
-    add_note("ffmpeg not found on PATH: no movie (the PNG frames are written)");
-  } else {
-    const fs::path mp4 = out_dir / (options.field + ".mp4");
-    const std::string start = entries.front().file.stem().string();
-    std::ostringstream cmd;
-    cmd << "ffmpeg -y -loglevel error -framerate 8 -start_number " << std::stoi(start) << " -i '"
-        << (out_dir / (options.field + "_%06d.png")).string()
-        << "' -vf 'scale=trunc(iw/2)*2:trunc(ih/2)*2' -pix_fmt yuv420p -vcodec libx264 '"
-        << mp4.string() << "' < /dev/null";
-    if (std::system(cmd.str().c_str()) == 0)
-      result.movie = mp4;
-    else
-      add_note("ffmpeg failed: no movie (command: " + cmd.str() + ")");
-  }
+  make_movie(entries, options, out_dir, result);
   return result;
 }
 

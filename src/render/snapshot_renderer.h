@@ -44,7 +44,7 @@ struct RenderOptions {
   std::optional<std::pair<double, double>> periodic;  // x span [x_min, x_max) if periodic
   std::string title;                                  // e.g. the run name
   bool movie = true;  // also an MP4 when ffmpeg is on PATH and every frame is drawn
-  // For field "coherence": rows of grains/NNNNNN.csv that are not grains (render/analyze_run.h
+  // For field "coherence": rows of grains/NNNNNN.csv that are not grains (report/analyze_run.h
   // non_grain_rows), and the mean grain diameter (NaN: from the first snapshot's areas).
   std::vector<std::string> non_grain_rows;
   double mean_diameter = std::numeric_limits<double>::quiet_NaN();

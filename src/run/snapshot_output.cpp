@@ -9,6 +9,7 @@ namespace sg {
 
 SnapshotOutput::SnapshotOutput(RunContext& context)
     : context_(context),
+      strain_rate_unit_(global_strain_rate(context.scenario)),
       fields_pvd_(context.folder.dir / "fields.pvd"),
       contacts_pvd_(context.folder.dir / "contacts.pvd") {}
 
@@ -55,7 +56,8 @@ void SnapshotOutput::finish() {
 
 void SnapshotOutput::write_state_files() {
   const std::filesystem::path& dir = context_.folder.dir;
-  write_vtu_snapshot(context_.simulation.model, dir / "fields" / snapshot_name("vtu"));
+  write_vtu_snapshot(context_.simulation.model, dir / "fields" / snapshot_name("vtu"),
+                     strain_rate_unit_);
   write_grain_snapshot(context_.simulation.model, dir / "grains" / snapshot_name("csv"));
 }
 

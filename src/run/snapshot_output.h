@@ -26,6 +26,7 @@ class SnapshotOutput : public RunObserver {
 
  private:
   RunContext& context_;
+  double strain_rate_unit_;  // V/D of a shear cell, else 1 (io/vtk_writer.h global_strain_rate)
   PvdCollection fields_pvd_, contacts_pvd_;
   bool snapshot_due_ = false;  // prepare() wrote the state files of a due snapshot
   StateSnapshot final_state_;  // finish(): the state put back after the contact evaluation

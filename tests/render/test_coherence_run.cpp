@@ -2,6 +2,7 @@
 // (tiny_run.h), plus the pieces they are built from (coherence_at, the script search).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -11,11 +12,11 @@
 #include <sstream>
 
 #include "core/error.h"
-#include "render/analyze_run.h"
 #include "render/coherence_frames.h"
 #include "render/plot_runner.h"
 #include "render/snapshot_renderer.h"
 #include "render/vtu_reader.h"
+#include "report/analyze_run.h"
 #include "scenes/scenario_files.h"
 #include "tiny_run.h"
 
@@ -228,6 +229,43 @@ TEST_F(TinyShear, ALowerThresholdFindsStructuresAndTheirStatistics) {
   EXPECT_TRUE(noted);
 }
 
+// The space-time picture's cells and the cylinders agree with the structures; the activated
+// thickness lies within the gap, one row per window snapshot.
+TEST_F(TinyShear, AnalyzeWritesTheSpaceTimeCellsTheCylindersAndTheActivatedThickness) {
+  AnalyzeOptions o;
+  o.coherence_threshold = 0.3;
+  const AnalyzeResult r = analyze_run(run_dir_, o);
+  ASSERT_TRUE(r.agglomerates.has_value());
+  const Table cylinders = read_table(r.cylinders_path);
+  ASSERT_EQ(cylinders.size(), r.agglomerates->structures.size());
+  for (std::size_t k = 0; k < cylinders.size(); ++k) {
+    const Structure& st = r.agglomerates->structures[k];
+    EXPECT_NEAR(num(cylinders[k], "height"), st.lifetime, 1e-9);
+    EXPECT_NEAR(num(cylinders[k], "diameter"), st.diameter, 1e-9);
+    EXPECT_GE(num(cylinders[k], "x_center"), 0.0);
+    EXPECT_LT(num(cylinders[k], "x_center"), 8.0);
+  }
+  // One row per labelled cell.
+  const Table cells = read_table(r.space_time_path);
+  const auto marked = static_cast<std::size_t>(std::count_if(r.agglomerates->labels.label.begin(),
+                                                             r.agglomerates->labels.label.end(),
+                                                             [](int l) { return l >= 0; }));
+  EXPECT_EQ(cells.size(), marked);
+  // ATT: D = 2.6 known, V = 1; both measures within [0, D]; one row per window snapshot.
+  ASSERT_TRUE(r.att.has_value());
+  const Table att = read_table(r.att_path);
+  EXPECT_EQ(att.size(), static_cast<std::size_t>(r.agglomerates->labels.nt));
+  for (const auto& row : att) {
+    EXPECT_GE(num(row, "att_map"), 0.0);
+    EXPECT_LE(num(row, "att_map"), 2.6 + 1e-12);
+    EXPECT_GE(num(row, "att_profile"), 0.0);
+  }
+  EXPECT_TRUE(std::isfinite(r.summary.att_map));
+  const nlohmann::json doc = read_json(r.summary_path);
+  EXPECT_EQ(doc.at("att").at("threshold_low").get<double>(), 0.2);
+  EXPECT_EQ(doc.at("att").at("layer_thickness").get<double>(), 2.6);
+}
+
 TEST_F(TinyShear, CoherencePicturesHaveTheSizeAndTheFixedRange) {
   RenderOptions o;
   o.field = "coherence";
@@ -281,15 +319,16 @@ TEST_F(TinyShear, PlotScriptDrawsValidPngs) {
   const auto script = find_plot_script(current_executable(), &tried);
   ASSERT_TRUE(script.has_value()) << "plot_run.py not found";
   const fs::path analysis = run_dir_ / "analysis";
-  for (const char* name : {"mu.png", "profiles.png", "energy.png", "agglomerate_pdfs.png"})
+  for (const char* name : {"mu.png", "profiles.png", "energy.png", "agglomerate_pdfs.png",
+                           "space_time.png", "cylinders.png", "att.png"})
     fs::remove(analysis / name);
   ASSERT_EQ(run_plot_script(*script, run_dir_), 0);
   // Figure sizes (inches) x 110 dpi, as plot_run.py draws them.
   const std::map<std::string, std::pair<long, long>> expected = {
-      {"mu.png", {880, 462}},
-      {"profiles.png", {880, 462}},
-      {"energy.png", {880, 462}},
-      {"agglomerate_pdfs.png", {1210, 418}}};
+      {"mu.png", {880, 462}},          {"profiles.png", {880, 462}},
+      {"energy.png", {880, 462}},      {"agglomerate_pdfs.png", {1210, 418}},
+      {"space_time.png", {1210, 462}}, {"cylinders.png", {880, 660}},
+      {"att.png", {880, 462}}};
   const nlohmann::json doc = read_json(analysis / "summary.json");
   for (const auto& [name, size] : expected) {
     const fs::path png = analysis / name;

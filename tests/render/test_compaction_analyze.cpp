@@ -12,7 +12,7 @@
 #include "analysis/csv_table.h"
 #include "analysis/grain_snapshot.h"
 #include "analysis/series.h"
-#include "render/analyze_run.h"
+#include "report/analyze_run.h"
 #include "render/plot_runner.h"
 #include "render/snapshot_renderer.h"
 #include "render/vtu_reader.h"

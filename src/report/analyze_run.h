@@ -27,15 +27,19 @@
 // omega_tilde (omega / (-V/D), eq. 7; empty if unknown).
 // agglomerate_pdfs.csv columns: quantity (omega_tilde, diameter, lifetime), bin_lo,
 // bin_hi, density (grain-weighted, integrates to 1 over the bins of a quantity).
+// agglomerate_space_time.csv, agglomerate_cylinders.csv: analysis/structure_cylinders.h.
+// att.csv: the activated thickness per window snapshot (analysis/activated_thickness.h).
+// Under pressure loading (D not in the scenario) D is measured (report/gap_report.cpp).
 //
-// Lives in render/ only because it needs the scenario layer (for run.log's scenario) and
-// render is the first stage above io; it belongs in analysis/ once that stage links io.
+// The steps, one file each: report/analyze_steps.h. This stage sits above render (it reads
+// the run folder with render's .vtu/.pvd and run.log readers) and below the commands.
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "analysis/activated_thickness.h"
 #include "analysis/agglomerates.h"
 #include "analysis/compaction_curve.h"
 #include "analysis/profiles.h"
@@ -51,6 +55,7 @@ struct AnalyzeOptions {
   int profile_bins = 0;                             // 0: two per mean grain diameter
   bool agglomerates = true;
   double coherence_threshold = 0.8;  // |C| > threshold marks a structure (paper 002: 0.8)
+  AttThresholds att;                 // shares of the velocity jump (paper 003: 0.2, 0.8)
 };
 
 struct ParameterSource {
@@ -73,6 +78,10 @@ struct AnalyzeResult {
   std::filesystem::path agglomerates_path, agglomerate_pdfs_path;  // empty if none
   std::optional<CompactionCurve> compaction;                       // compaction-box runs only
   std::filesystem::path compaction_path;                           // empty if none
+  std::optional<AttSeries> att;    // activated thickness per snapshot; absent if unknown
+  std::string att_layer_source;    // where H came from
+  std::filesystem::path att_path;  // empty if none
+  std::filesystem::path space_time_path, cylinders_path;  // empty without agglomerates
 };
 
 struct RunInfo;

@@ -1,0 +1,109 @@
+#include <algorithm>
+#include <cmath>
+
+#include "analysis/driven_body.h"
+#include "analysis/energy_budget.h"
+#include "analysis/friction.h"
+#include "analysis/steady_state.h"
+#include "core/error.h"
+#include "report/analyze_steps.h"
+
+namespace sg::report {
+namespace {
+
+FrictionStats unknown_friction(const std::string& body) {
+  FrictionStats s;
+  s.body = body;
+  s.normal_force = s.tangential_force = s.mu = s.mu_std = kNan;
+  s.normal_stress = s.shear_stress = kNan;
+  return s;
+}
+
+// The shear cell's driven bodies that have columns in series.csv: both or none.
+std::vector<DrivenBody> shear_cell_columns(const Series& series, std::vector<std::string>& notes) {
+  std::vector<DrivenBody> bodies;
+  for (const DrivenBody& b : shear_cell_bodies())
+    if (std::find(series.body_names.begin(), series.body_names.end(), b.name) !=
+        series.body_names.end())
+      bodies.push_back(b);
+  if (bodies.size() != 2) {
+    notes.push_back(
+        "series.csv has no 'top' and 'bottom' columns (not a shear cell): no "
+        "friction, stresses, E~ or c~");
+    bodies.clear();
+  }
+  return bodies;
+}
+
+// The given window, else MSER on the driven bodies' forces, else the whole run.
+TimeWindow choose_window(const Series& series, std::span<const DrivenBody> bodies,
+                         const AnalyzeOptions& options, std::vector<std::string>& notes) {
+  TimeWindow window;
+  if (options.window) {
+    window = window_from_times(series, options.window->first, options.window->second);
+  } else if (!bodies.empty()) {
+    window = detect_steady_window(series, bodies);
+  } else {
+    window.first = 0;
+    window.last = series.size() - 1;
+    window.t_begin = series.column("time")[0];
+    window.t_end = series.column("time")[series.size() - 1];
+    window.detected = false;
+    notes.push_back(
+        "window: the whole run (no driven shear-cell body to detect a steady state "
+        "on; pass --window T0 T1)");
+  }
+  if (window.truncation_at_limit)
+    notes.push_back(
+        "window: MSER's truncation hit half the series; the transient may not be "
+        "over, the averages are suspect");
+  return window;
+}
+
+// Notes for the dimensionless parameters that stayed unknown, naming the missing input.
+void note_dimensionless_gaps(const AnalyzeResult& r, std::vector<std::string>& notes) {
+  const RunParameters& p = r.parameters;
+  const AnalysisSummary& s = r.summary;
+  if (std::isfinite(s.friction.mean.normal_stress)) {
+    if (!std::isfinite(p.young_modulus)) notes.push_back("E~ null: E unknown (pass --young)");
+    if (!(p.cohesion > 0.0)) notes.push_back("c~ null: cohesion unknown or 0");
+  }
+  if (!std::isfinite(s.dimensionless.viscosity)) {
+    std::string missing;
+    if (!std::isfinite(p.velocity)) missing += "V unknown; ";
+    if (!std::isfinite(p.gap)) missing += "D unknown; ";
+    notes.push_back("alpha~ null: needs alpha > 0, V and D (" + missing +
+                    "alpha = " + number(p.damping_alpha) + ")");
+  }
+}
+
+}  // namespace
+
+void analyze_shear(AnalyzeResult& r, const Series& series, const RunInfo& run,
+                   const AnalyzeOptions& options, const std::filesystem::path& run_dir) {
+  std::vector<std::string>& notes = r.notes;
+  const std::vector<DrivenBody> bodies = shear_cell_columns(series, notes);
+  AnalysisSummary& s = r.summary;
+  s.window = choose_window(series, bodies, options, notes);
+  measure_gap(r, series, run, run_dir);
+  s.friction.mean = unknown_friction("mean");
+  if (!bodies.empty()) {
+    try {
+      s.friction = compute_friction(series, bodies, s.window, r.parameters.length);
+    } catch (const Error& e) {
+      notes.push_back(std::string("friction not computed: ") + e.what());
+      s.friction.bodies.clear();
+      s.friction.mean = unknown_friction("mean");
+    }
+  }
+  s.dimensionless = compute_dimensionless(r.parameters, s.friction.mean.normal_stress);
+  note_dimensionless_gaps(r, notes);
+  try {
+    s.energy = compute_energy_budget(series, s.window, s.friction.mean.mu,
+                                     s.friction.mean.normal_force, r.parameters.velocity);
+  } catch (const Error& e) {
+    notes.push_back(std::string("energy budget not computed: ") + e.what());
+  }
+}
+
+}  // namespace sg::report
