@@ -1,7 +1,6 @@
 // The field nodes' phases of ExplicitSolver::step: the velocity update (free nodes, driven
 // nodes and load-driven carriers) and the position update. See explicit_solver.h.
 #include <cmath>
-#include <type_traits>
 
 #include "core/error.h"
 #include "solver/explicit_solver.h"
@@ -21,10 +20,99 @@ constexpr std::size_t kDriveSums = 6;
 
 }  // namespace
 
+namespace {
+
+// Per body: kinetic energy (time-centred), power of gravity, f_v . v_n+1/2, and of the total
+// force F_n on each parameter F_n . v_n+1/2 and F_n . F_n / m (the kinetic energies K_n^+ and
+// K_n^- of the header, as corrections of the time-centred one); IMEX: the damping correction.
+struct BodySums {
+  double kinetic = 0.0, external_power = 0.0, viscous_power = 0.0, force_power = 0.0,
+         force_square = 0.0, damping_correction = 0.0;
+  // Node i after its update from (vx_old, vy_old); (bgx, bgy): the body's gravity.
+  void add_node(const NodeState& n, std::size_t i, double vx_old, double vy_old, double bgx,
+                double bgy) {
+    kinetic += 0.5 * n.mass[i] * (vx_old * n.vx[i] + vy_old * n.vy[i]);
+    force_power += n.fx[i] * n.vx[i] + n.fy[i] * n.vy[i];
+    force_square += n.inverse_mass[i] * (n.fx[i] * n.fx[i] + n.fy[i] * n.fy[i]);
+    viscous_power += n.viscous_fx[i] * n.vx[i] + n.viscous_fy[i] * n.vy[i];
+    external_power += n.mass[i] * (bgx * n.vx[i] + bgy * n.vy[i]);
+  }
+};
+
+// The explicit update of one body's nodes. Two instances: grains (no driven nodes, the hot
+// case) never look at NodeState::drive; a strip with a driven back face checks each node.
+template <bool kHasDrivenNodes>
+void advance_body_explicitly(const Model& model, NodeState& n, const Body& body, double h,
+                             double* drive_data, BodySums& sums) {
+  const double bgx = model.gravity.x() / body.mass_scale, bgy = model.gravity.y() / body.mass_scale;
+  for (int k = body.node_begin; k < body.node_end; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    const double vx_old = n.vx[i], vy_old = n.vy[i];
+    const int drive = kHasDrivenNodes ? n.drive[i] : -1;
+    if (drive < 0) {
+      n.vx[i] += h * n.inverse_mass[i] * n.fx[i];
+      n.vy[i] += h * n.inverse_mass[i] * n.fy[i];
+    } else {
+      // Driven component: v_n+1/2 imposed, the reaction R_I = m_I (v_n+1/2 - v_n-1/2) / h - f_I
+      // added to the force (header).
+      const NodeDrive& nd = model.node_drives[static_cast<std::size_t>(drive)];
+      double* drive_sums = drive_data + kDriveSums * static_cast<std::size_t>(drive);
+      double* velocity[2] = {&n.vx[i], &n.vy[i]};
+      double* force[2] = {&n.fx[i], &n.fy[i]};
+      for (std::size_t c = 0; c < 2; ++c) {
+        if (nd.mode[c] == DriveMode::free) {
+          *velocity[c] += h * n.inverse_mass[i] * *force[c];
+          continue;
+        }
+        const double v_old = *velocity[c], v_new = drive_sums[c];
+        const double reaction = n.mass[i] * (v_new - v_old) / h - *force[c];
+        *force[c] += reaction;  // fx, fy: the total force on the parameter
+        *velocity[c] = v_new;
+        drive_sums[2 + c] += reaction;
+        if (nd.mode[c] == DriveMode::velocity) {  // a carrier's work: as a servo load's
+          drive_sums[4] += reaction * v_old;
+          drive_sums[5] += reaction * v_new;
+        }
+      }
+    }
+    sums.add_node(n, i, vx_old, vy_old, bgx, bgy);
+  }
+}
+
+// IMEX (implicit_viscosity.h): the body's increments dv from (M + h/2 C) dv = h F, the force
+// applied F* = M dv / h; the viscous force booked becomes f_v + F* - F, whose power against
+// v_n-1/2 corrects the closing half of the damping dissipation.
+void advance_body_implicitly(const Model& model, NodeState& n, BodyId b, double h,
+                             ImplicitViscosity& viscosity, double* increment_x, double* increment_y,
+                             BodySums& sums) {
+  const Body& body = model.bodies[static_cast<std::size_t>(b)];
+  const double bgx = model.gravity.x() / body.mass_scale, bgy = model.gravity.y() / body.mass_scale;
+  const auto o = static_cast<std::size_t>(body.node_begin);
+  double* dvx = increment_x + o;
+  double* dvy = increment_y + o;
+  viscosity.solve(model, b, h, n.ux.data() + o, n.uy.data() + o, n.fx.data() + o, n.fy.data() + o,
+                  dvx, dvy);
+  for (int k = body.node_begin; k < body.node_end; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    const double vx_old = n.vx[i], vy_old = n.vy[i];
+    const double ax = dvx[i - o], ay = dvy[i - o];
+    const double fx = n.mass[i] * ax / h, fy = n.mass[i] * ay / h;
+    sums.damping_correction += (fx - n.fx[i]) * vx_old + (fy - n.fy[i]) * vy_old;
+    n.viscous_fx[i] += fx - n.fx[i];
+    n.viscous_fy[i] += fy - n.fy[i];
+    n.fx[i] = fx;
+    n.fy[i] = fy;
+    n.vx[i] = vx_old + ax;
+    n.vy[i] = vy_old + ay;
+    sums.add_node(n, i, vx_old, vy_old, bgx, bgy);
+  }
+}
+
+}  // namespace
+
 ExplicitSolver::NodeUpdate ExplicitSolver::update_node_velocities(const StepSizes& steps) {
   const double h = steps.velocity;
   NodeState& n = model_.nodes;
-  const double gx = model_.gravity.x(), gy = model_.gravity.y();
   const std::size_t drive_count = model_.node_drives.size();
   body_sums_.assign(kBodySums * model_.bodies.size() + kDriveSums * drive_count, 0.0);
   double* const drive_data = body_sums_.data() + kBodySums * model_.bodies.size();
@@ -41,99 +129,27 @@ ExplicitSolver::NodeUpdate ExplicitSolver::update_node_velocities(const StepSize
   NodeUpdate update;
   update.carriers = advance_node_carriers(h, drive_data);
 
-  // Per body: kinetic energy (time-centred), power of gravity, f_v . v_n+1/2, and of the
-  // total force F_n on each parameter F_n . v_n+1/2 and F_n . F_n / m (the kinetic energies
-  // K_n^+ and K_n^- of the header, as corrections of the time-centred one). Sums are kept per
-  // body and added in body order: the result does not depend on the number of threads.
+  // Sums are kept per body and added in body order: the result does not depend on the number
+  // of threads.
   const int body_count = static_cast<int>(model_.bodies.size());
 #pragma omp parallel for schedule(static)
   for (int b = 0; b < body_count; ++b) {
     const Body& body = model_.bodies[static_cast<std::size_t>(b)];
-    const double bgx = gx / body.mass_scale, bgy = gy / body.mass_scale;
-    double kinetic = 0.0, external_power = 0.0, viscous_power = 0.0, force_power = 0.0,
-           force_square = 0.0;
-    // Two instances of the node loop: grains (no driven nodes, the hot case) never look at
-    // NodeState::drive; a strip with a driven back face checks each node.
-    auto advance_nodes = [&](auto has_driven_nodes) {
-      for (int k = body.node_begin; k < body.node_end; ++k) {
-        const auto i = static_cast<std::size_t>(k);
-        const double vx_old = n.vx[i], vy_old = n.vy[i];
-        const int drive = decltype(has_driven_nodes)::value ? n.drive[i] : -1;
-        if (drive < 0) {
-          n.vx[i] += h * n.inverse_mass[i] * n.fx[i];
-          n.vy[i] += h * n.inverse_mass[i] * n.fy[i];
-        } else {
-          // Driven component: v_n+1/2 imposed, the reaction R_I = m_I (v_n+1/2 - v_n-1/2) / h
-          // - f_I added to the force (header).
-          const NodeDrive& nd = model_.node_drives[static_cast<std::size_t>(drive)];
-          double* sums = drive_data + kDriveSums * static_cast<std::size_t>(drive);
-          double* velocity[2] = {&n.vx[i], &n.vy[i]};
-          double* force[2] = {&n.fx[i], &n.fy[i]};
-          for (std::size_t c = 0; c < 2; ++c) {
-            if (nd.mode[c] == DriveMode::free) {
-              *velocity[c] += h * n.inverse_mass[i] * *force[c];
-              continue;
-            }
-            const double v_old = *velocity[c], v_new = sums[c];
-            const double reaction = n.mass[i] * (v_new - v_old) / h - *force[c];
-            *force[c] += reaction;  // fx, fy: the total force on the parameter
-            *velocity[c] = v_new;
-            sums[2 + c] += reaction;
-            if (nd.mode[c] == DriveMode::velocity) {  // a carrier's work: as a servo load's
-              sums[4] += reaction * v_old;
-              sums[5] += reaction * v_new;
-            }
-          }
-        }
-        kinetic += 0.5 * n.mass[i] * (vx_old * n.vx[i] + vy_old * n.vy[i]);
-        force_power += n.fx[i] * n.vx[i] + n.fy[i] * n.vy[i];
-        force_square += n.inverse_mass[i] * (n.fx[i] * n.fx[i] + n.fy[i] * n.fy[i]);
-        viscous_power += n.viscous_fx[i] * n.vx[i] + n.viscous_fy[i] * n.vy[i];
-        external_power += n.mass[i] * (bgx * n.vx[i] + bgy * n.vy[i]);
-      }
-    };
-    // IMEX (implicit_viscosity.h): the body's increments dv from (M + h/2 C) dv = h F, the
-    // force applied F* = M dv / h; the viscous force booked becomes f_v + F* - F, whose power
-    // against v_n-1/2 corrects the closing half of the damping dissipation.
-    double damping_correction = 0.0;
-    auto advance_implicit_nodes = [&]() {
-      const auto o = static_cast<std::size_t>(body.node_begin);
-      double* dvx = increment_x_.data() + o;
-      double* dvy = increment_y_.data() + o;
-      implicit_->solve(model_, b, h, n.ux.data() + o, n.uy.data() + o, n.fx.data() + o,
-                       n.fy.data() + o, dvx, dvy);
-      for (int k = body.node_begin; k < body.node_end; ++k) {
-        const auto i = static_cast<std::size_t>(k);
-        const double vx_old = n.vx[i], vy_old = n.vy[i];
-        const double ax = dvx[i - o], ay = dvy[i - o];
-        const double fx = n.mass[i] * ax / h, fy = n.mass[i] * ay / h;
-        damping_correction += (fx - n.fx[i]) * vx_old + (fy - n.fy[i]) * vy_old;
-        n.viscous_fx[i] += fx - n.fx[i];
-        n.viscous_fy[i] += fy - n.fy[i];
-        n.fx[i] = fx;
-        n.fy[i] = fy;
-        n.vx[i] = vx_old + ax;
-        n.vy[i] = vy_old + ay;
-        kinetic += 0.5 * n.mass[i] * (vx_old * n.vx[i] + vy_old * n.vy[i]);
-        force_power += n.fx[i] * n.vx[i] + n.fy[i] * n.vy[i];
-        force_square += n.inverse_mass[i] * (n.fx[i] * n.fx[i] + n.fy[i] * n.fy[i]);
-        viscous_power += n.viscous_fx[i] * n.vx[i] + n.viscous_fy[i] * n.vy[i];
-        external_power += n.mass[i] * (bgx * n.vx[i] + bgy * n.vy[i]);
-      }
-    };
+    BodySums sums;
     if (implicit_ && has_implicit_viscosity(model_, b))
-      advance_implicit_nodes();
+      advance_body_implicitly(model_, n, b, h, *implicit_, increment_x_.data(), increment_y_.data(),
+                              sums);
     else if (body.node_drive < 0)
-      advance_nodes(std::false_type{});
+      advance_body_explicitly<false>(model_, n, body, h, drive_data, sums);
     else
-      advance_nodes(std::true_type{});
-    double* sums = body_sums_.data() + kBodySums * static_cast<std::size_t>(b);
-    sums[0] = kinetic;
-    sums[1] = external_power;
-    sums[2] = viscous_power;
-    sums[3] = force_power;
-    sums[4] = force_square;
-    sums[5] = damping_correction;
+      advance_body_explicitly<true>(model_, n, body, h, drive_data, sums);
+    double* out = body_sums_.data() + kBodySums * static_cast<std::size_t>(b);
+    out[0] = sums.kinetic;
+    out[1] = sums.external_power;
+    out[2] = sums.viscous_power;
+    out[3] = sums.force_power;
+    out[4] = sums.force_square;
+    out[5] = sums.damping_correction;
   }
   for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
     const double* sums = body_sums_.data() + kBodySums * b;

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "io/checkpoint.h"
-#include "io/run.h"
+#include "run/run.h"
 #include "scenario/scenario.h"
 #include "scenes/scenario_files.h"
 
