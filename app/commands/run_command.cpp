@@ -11,6 +11,7 @@ struct RunArguments {
   std::string scenario;
   std::string output;
   bool resume = false;
+  long max_steps = -1;
 };
 
 const Registration registration(
@@ -24,6 +25,10 @@ const Registration registration(
                        "output root folder (overrides [output] directory)");
        run->add_flag("--resume", args->resume,
                      "continue a stopped run from <run folder>/checkpoint.bin (same scenario)");
+       // For tests (the scenario fuzzer): a tiny run of any scenario. Hidden from --help.
+       run->add_option("--max-steps", args->max_steps,
+                       "stop after N steps, leaving the folder as a killed run leaves it")
+           ->group("");
        return std::function<int()>([args, &options] {
          apply_threads(options);
          const ScenarioDef scenario = load_scenario(args->scenario);
@@ -31,6 +36,7 @@ const Registration registration(
          run_options.progress = &std::cerr;
          run_options.output_root_override = args->output;
          run_options.resume = args->resume;
+         run_options.stop_after_steps = args->max_steps;
          const RunSummary summary = run_scenario(scenario, run_options);
          std::cout << "run '" << scenario.name << "': " << summary.steps << " steps";
          if (summary.resumed_from_step >= 0)

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/file_name.h"
 
 namespace sg {
 namespace {
@@ -464,7 +465,7 @@ CampaignDef load_campaign(const fs::path& file) {
            "[grid] or [[list]]");
 
   c.name = string_value(file, doc, "name", file.stem().string());
-  if (c.name.empty() || file_safe(c.name) != c.name || c.name[0] == '.')
+  if (!is_plain_file_name(c.name) || file_safe(c.name) != c.name || c.name[0] == '.')
     fail(file, doc.get("name") ? line_of(*doc.get("name")) : 1, "name", "",
          "expected a folder name (letters, digits, '.', '_', '+', '-', ','), got \"" + c.name +
              "\"");
@@ -614,6 +615,7 @@ CampaignDef load_campaign(const fs::path& file) {
       run.values.push_back(texts[p][choice[p]]);
       run.id += "_" + c.parameters[p].label + "=" + shown[p][choice[p]];
     }
+    require_plain_file_name(run.id, file.string() + ": run id (its folder name)");
     c.runs.push_back(std::move(run));
   }
   for (CampaignRun& run : c.runs)

@@ -15,8 +15,10 @@
 #include "io/checkpoint.h"
 #include "io/contact_vtk.h"
 #include "io/grain_snapshot_writer.h"
+#include "io/run_directory.h"
 #include "io/vtk_writer.h"
 #include "model/kinematics.h"
+#include "scenario/geometry_checks.h"
 #include "solver/explicit_solver.h"
 #include "solver/mass_scaling.h"
 #include "solver/stable_time_step.h"
@@ -124,7 +126,8 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
   const auto start = clock::now();
   const std::filesystem::path root =
       options.output_root_override.empty() ? scenario.output_root : options.output_root_override;
-  const std::filesystem::path dir = root / scenario.name;
+  // Checks the name and the folder, removes an old checkpoint unless resuming (run_directory.h).
+  const std::filesystem::path dir = prepare_run_directory(root, scenario.name, options.resume);
   const std::filesystem::path checkpoint_path = dir / "checkpoint.bin";
   // series.csv is appended and flushed row by row: rows already written survive a crash.
   // Written first to a temporary name and renamed at the end, so a complete-looking file
@@ -158,8 +161,17 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
                            contacts ? contacts->max_stiffness() : 0.0);
     mass_scaling_note = "# " + describe(report, model) + "\n";
   }
+  // Impossible periodic geometry is refused, suspicious initial states are warned about
+  // (scenario/geometry_checks.h); the warnings go to run.log too.
+  const std::string initial_state_note =
+      check_initial_state(scenario, model, contacts != nullptr, options.progress);
   ExplicitSolver solver(model, contacts.get());
   StepControlParams step_control;
+  step_control.on_step_collapse = [&](const StableStep& now, double first_dt) {
+    if (options.progress)
+      *options.progress << "\nsoftgrain: warning: " << describe_step_collapse(model, now, first_dt)
+                        << "\n";
+  };
   step_control.safety = scenario.time_step_safety;
   step_control.fixed_step = scenario.fixed_time_step;
   step_control.reestimate_interval = scenario.reestimate_interval;
@@ -261,12 +273,11 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
          << ", time " << solver.state().time << "\n";
     resume_note = note.str();
   } else {
-    // A checkpoint left by an earlier run in this folder must not be resumed into this one.
-    std::filesystem::remove(checkpoint_path);
     series.open(partial_series, std::ios::binary | std::ios::trunc);
   }
   SG_VERIFY(series, "cannot write '" << partial_series.string() << "'");
-  write_run_log(dir / "run.log", scenario, model, stable, dt, mass_scaling_note, resume_note);
+  write_run_log(dir / "run.log", scenario, model, stable, dt,
+                mass_scaling_note + initial_state_note, resume_note);
   if (options.progress && !mass_scaling_note.empty())
     *options.progress << "softgrain: " << mass_scaling_note.substr(2);
   if (options.progress)
@@ -446,7 +457,8 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
          << st.rejected << " rejected; dt in [" << st.dt_min << ", " << st.dt_max << "]; "
          << st.estimates << " estimates of the critical step (this session)\n";
     if (!st.last_rejection.empty()) note << "# last rejection: " << st.last_rejection << "\n";
-    write_run_log(dir / "run.log", scenario, model, stable, dt, mass_scaling_note, note.str());
+    write_run_log(dir / "run.log", scenario, model, stable, dt,
+                  mass_scaling_note + initial_state_note, note.str());
     if (options.progress && (st.rejected > 0 || st.dt_min != st.dt_max))
       *options.progress << "\r  step control: " << st.accepted << " steps accepted, " << st.rejected
                         << " rejected, dt in [" << st.dt_min << ", " << st.dt_max << "]\n";

@@ -13,6 +13,7 @@
 #include "analysis/coherence.h"
 #include "analysis/velocity_grid.h"
 #include "core/error.h"
+#include "core/file_name.h"
 #include "render/coherence_frames.h"
 #include "render/colormap.h"
 
@@ -593,6 +594,7 @@ RenderResult render_run(const fs::path& run_dir, const RenderOptions& options) {
   const Layout layout = make_layout(options.width, options.height, world, !style.categorical);
 
   // Pass 2: the pictures.
+  require_plain_file_name(options.field, "render --field (names its pictures)");
   const fs::path out_dir = run_dir / "render";
   fs::create_directories(out_dir);
   const std::size_t first = options.last_frame_only ? entries.size() - 1 : 0;

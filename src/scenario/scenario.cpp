@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "geometry/shapes.h"
 #include "model/kinematics.h"
+#include "scenario/geometry_checks.h"
 #include "scenario/toml_reader.h"
 
 namespace sg {
@@ -325,6 +326,7 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
       root.fail("contact_laws", e.what());
     }
   }
+  check_scenario_geometry(s, root);  // name, periodic cell, node spacing (docs: "Safety")
   return s;
 }
 
