@@ -95,20 +95,14 @@ void check_coordinates(const ScenarioDef& s, const TomlReader& root) {
   auto check = [&](const TomlReader& t, const char* key, const Vec2& p) {
     if (!(std::abs(p.x()) <= limit && std::abs(p.y()) <= limit))
       t.fail(key, "[" + number(p.x()) + ", " + number(p.y()) +
-                      "] is too far from the origin (or too large) for the node spacing " +
+                      "] is too far from the origin for the node spacing " +
                       number(s.discretization.mesh.spacing) + ": expected coordinates within " +
                       number(kMaxCoordinateInSpacings) +
                       " node spacings, |x|, |y| <= " + number(limit));
   };
   const std::vector<TomlReader> grains = root.array_of_tables("grains");
-  for (std::size_t i = 0; i < s.grains.size() && i < grains.size(); ++i) {
-    const GrainSpec& g = s.grains[i];
-    check(grains[i], "center", g.center);
-    if (g.shape == GrainShape::disc)
-      check(grains[i], "radius", Vec2(g.radius, 0.0));
-    else
-      check(grains[i], "semi_axes", g.semi_axes);
-  }
+  for (std::size_t i = 0; i < s.grains.size() && i < grains.size(); ++i)
+    check(grains[i], "center", s.grains[i].center);
   const std::vector<TomlReader> walls = root.array_of_tables("walls");
   for (std::size_t i = 0; i < s.walls.size() && i < walls.size(); ++i) {
     check(walls[i], "lower_left", s.walls[i].lower_left);
@@ -120,6 +114,11 @@ void check_coordinates(const ScenarioDef& s, const TomlReader& root) {
 // 1e300 its generation did not end (issue #15's fuzzer).
 void check_shear_cell(const ScenarioDef& s, const TomlReader& root) {
   const ShearCellDef& c = *s.shear_cell;
+  const double limit = kMaxCoordinateInSpacings * s.discretization.mesh.spacing;
+  if (!(c.length <= limit))
+    root.table("shear_cell")
+        ->fail("length", "expected at most " + number(kMaxCoordinateInSpacings) +
+                             " node spacings (" + number(limit) + "), got " + number(c.length));
   if (!(c.roughness_rms <= c.length))
     root.table("shear_cell")
         ->fail("roughness_rms", "expected at most the cell length " + number(c.length) + ", got " +
@@ -251,10 +250,12 @@ std::vector<BodyOutline> closed_outlines(const Model& model) {
 void check_scenario_geometry(const ScenarioDef& scenario, const TomlReader& root) {
   if (const std::string why = plain_file_name_problem(scenario.name); !why.empty())
     root.fail("name", "the run name becomes the run folder <output>/<name>/: " + why);
+  // The spacing first: the coordinate bound is in spacings (a grain's size is bounded by
+  // the spacing check, at most kMaxDiameterPerSpacing spacings).
+  check_node_spacing(scenario, root);
   check_coordinates(scenario, root);
   if (scenario.periodic_x) check_periodic_bodies(scenario, root);
   if (scenario.shear_cell) check_shear_cell(scenario, root);
-  check_node_spacing(scenario, root);
 }
 
 std::string check_initial_state(const ScenarioDef& scenario, const Model& model, bool contacts_on,

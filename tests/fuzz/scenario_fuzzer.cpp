@@ -8,7 +8,7 @@
 //   scenario_fuzzer SOFTGRAIN EXAMPLES_DIR
 // Environment (CI uses the defaults):
 //   SOFTGRAIN_FUZZ_CASES   cases per example file, sampled with the seed (default 10; "all":
-//                          every mutation, about 4000 cases, an hour or more on 2 cores)
+//                          every mutation, about 3000 cases, one to two hours on 2 cores)
 //   SOFTGRAIN_FUZZ_SEED    seed of the sampling (default 15)
 //   SOFTGRAIN_FUZZ_TIMEOUT seconds allowed per case (default 60)
 //   SOFTGRAIN_FUZZ_FULL    1: include the *-full examples (each case of those builds a
