@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <string>
 
@@ -14,9 +15,12 @@
 #include "geometry/shapes.h"
 #include "io/run.h"
 #include "io/run_directory.h"
+#include "model/kinematics.h"
 #include "scenario/geometry_checks.h"
 #include "scenario/scenario.h"
 #include "scenes/scenario_files.h"
+#include "solver/explicit_solver.h"
+#include "solver/step_controller.h"
 
 namespace sg {
 namespace {
@@ -129,6 +133,43 @@ TEST(Safety, GrainsOverlappingAtTheStartAreReportedWithTheDepth) {
   const ScenarioDef apart =
       load_scenario(scenes::write_text_file(temp_root() / "apart.toml", two_discs("", 1.05)));
   EXPECT_EQ(check_initial_state(apart, build_model(apart), true, nullptr), "");
+}
+
+TEST(Safety, CollapsingStableStepIsWarnedOnceNamingTheBody) {
+  // The left disc is compressed more and more between steps (uniform stretch s in x and y,
+  // J = s^2): its elements stiffen and the stable step the controller re-estimates before
+  // each step falls with them; the warning comes once, when it is 100 times below the first.
+  const ScenarioDef s =
+      load_scenario(scenes::write_text_file(temp_root() / "crush.toml", two_discs("", 2.0)));
+  Model model = build_model(s);
+  ExplicitSolver solver(model);
+  StepControlParams params;
+  params.reestimate_interval = 1;
+  int calls = 0;
+  double warned_at = 0.0;
+  std::string warning;
+  params.on_step_collapse = [&](const StableStep& now, double first_dt) {
+    ++calls;
+    warning = describe_step_collapse(model, now, first_dt);
+    EXPECT_LT(now.dt * kStepCollapseFactor, first_dt);
+  };
+  StepController controller(solver, nullptr, params);
+  const double first = controller.next_step();
+  controller.advance();
+  for (double stretch : {0.5, 0.2, 0.1, 0.05, 0.02, 0.01, 0.008, 0.006}) {
+    set_affine_deformation(model, 0, stretch * Mat2::Identity());
+    for (int i = model.bodies[0].node_begin; i < model.bodies[0].node_end; ++i)
+      model.nodes.vx[static_cast<std::size_t>(i)] = model.nodes.vy[static_cast<std::size_t>(i)] =
+          0.0;
+    controller.advance();
+    if (calls == 1 && warned_at == 0.0) warned_at = stretch;
+  }
+  EXPECT_EQ(calls, 1);
+  EXPECT_GT(warned_at, 0.0);
+  std::cout << "stable step 100x below the first (" << first << ") at stretch " << warned_at
+            << "\n";
+  EXPECT_NE(warning.find("below 1/100 of the first estimate"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("body 'left' sets it"), std::string::npos) << warning;
 }
 
 TEST(Safety, RunRefusesAForeignFolderAndDeletesNothingThere) {
