@@ -21,12 +21,13 @@ bool written_by_softgrain(std::string name) {
   constexpr std::string_view kTemporary = ".tmp";  // io/atomic_file.h, after a kill
   if (name.size() > kTemporary.size() && name.ends_with(kTemporary))
     name.resize(name.size() - kTemporary.size());
-  static constexpr std::array<std::string_view, 14> known = {
-      "run.log",    "series.csv",   "series.csv.partial",
-      "fields.pvd", "contacts.pvd", "checkpoint.bin",
-      "fields",     "grains",       "contacts",
-      "sample",     "render",       "analysis",
-      "sweep.log",  "sweep.failed"};
+  // scenario.toml, sweep.log, sweep.failed: a campaign run's folder (campaign/sweep.cpp).
+  static constexpr std::array<std::string_view, 15> known = {
+      "run.log",       "series.csv",   "series.csv.partial",
+      "fields.pvd",    "contacts.pvd", "checkpoint.bin",
+      "fields",        "grains",       "contacts",
+      "sample",        "render",       "analysis",
+      "scenario.toml", "sweep.log",    "sweep.failed"};
   for (std::string_view k : known)
     if (name == k) return true;
   return false;

@@ -5,8 +5,9 @@
 //   - the folder must not be a symbolic link (it would lead elsewhere);
 //   - starting over (not resuming) in an existing, non-empty folder is refused unless it is
 //     a softgrain run folder: it holds a run.log written by softgrain, or only entries a
-//     softgrain command writes there (fields/, grains/, sample/, sweep.log, ...: a run that
-//     failed before its log, a `generate`d sample, a campaign run about to start);
+//     softgrain command writes there (fields/, grains/, sample/, sweep.log, scenario.toml,
+//     ...: a run that failed before its log, a `generate`d sample, a campaign run about to
+//     start);
 //   - starting over removes the folder's checkpoint.bin (an earlier run's checkpoint must
 //     not be resumed into this one), and nothing else.
 #include <filesystem>
