@@ -1,8 +1,10 @@
 // softgrain: the command line. Thin: parses options, dispatches to the subcommands
 // (app/commands/*.cpp), prints errors once.
 #include <omp.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <iostream>
 
 #include "command_registry.h"
@@ -19,10 +21,24 @@ void apply_threads(const GlobalOptions& options) {
   if (options.threads > 0) omp_set_num_threads(options.threads);
 }
 
+// OpenMP threads waiting at a barrier spin by default (libgomp spins for a while before it
+// sleeps). When several runs share the cores (two runs of 2 threads on 2 cores), the spinning
+// threads of one take the cores the other needs: the issue #15 measurement was 62 instead
+// of ~700 steps/s. Passive waiting (threads sleep at once) costs a lone run little and makes
+// two runs share the cores fairly (README, "Several runs on one machine"). libgomp reads
+// OMP_WAIT_POLICY when it is loaded, before main: unless the user chose a policy, the
+// program sets PASSIVE and executes itself again, once (if that fails it goes on as is).
+void choose_omp_wait_policy(char** argv) {
+  if (std::getenv("OMP_WAIT_POLICY")) return;
+  setenv("OMP_WAIT_POLICY", "PASSIVE", 1);
+  execv("/proc/self/exe", argv);
+}
+
 }  // namespace sg::app
 
 int main(int argc, char** argv) {
   using namespace sg::app;
+  choose_omp_wait_policy(argv);
   CLI::App app{
       "softgrain: 2D simulation of rigid and highly deformable grains (multibody meshfree)"};
   app.footer(

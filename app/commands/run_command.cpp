@@ -12,6 +12,7 @@ struct RunArguments {
   std::string output;
   bool resume = false;
   bool profile = false;
+  long max_steps = -1;
 };
 
 const Registration registration(
@@ -28,6 +29,10 @@ const Registration registration(
        run->add_flag("--profile", args->profile,
                      "show the share of each phase of the step (contacts, internal forces, ...) "
                      "with the progress line; run.log always ends with the profile");
+       // For tests (the scenario fuzzer): a tiny run of any scenario. Hidden from --help.
+       run->add_option("--max-steps", args->max_steps,
+                       "stop after N steps, leaving the folder as a killed run leaves it")
+           ->group("");
        return std::function<int()>([args, &options] {
          apply_threads(options);
          const ScenarioDef scenario = load_scenario(args->scenario);
@@ -36,6 +41,7 @@ const Registration registration(
          run_options.output_root_override = args->output;
          run_options.resume = args->resume;
          run_options.profile = args->profile;
+         run_options.stop_after_steps = args->max_steps;
          const RunSummary summary = run_scenario(scenario, run_options);
          std::cout << "run '" << scenario.name << "': " << summary.steps << " steps";
          if (summary.resumed_from_step >= 0)

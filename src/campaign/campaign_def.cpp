@@ -13,6 +13,7 @@
 
 #include "campaign/paper_coordinates.h"
 #include "core/error.h"
+#include "core/file_name.h"
 
 namespace sg {
 namespace {
@@ -468,7 +469,7 @@ void read_settings(const fs::path& file, const toml::table& doc, CampaignDef& c)
            "[grid] or [[list]]");
 
   c.name = string_value(file, doc, "name", file.stem().string());
-  if (c.name.empty() || file_safe(c.name) != c.name || c.name[0] == '.')
+  if (!is_plain_file_name(c.name) || file_safe(c.name) != c.name || c.name[0] == '.')
     fail(file, doc.get("name") ? line_of(*doc.get("name")) : 1, "name", "",
          "expected a folder name (letters, digits, '.', '_', '+', '-', ','), got \"" + c.name +
              "\"");
@@ -693,6 +694,7 @@ void expand_runs(const fs::path& file, const std::vector<Varied>& varied, std::s
              paper_values(frame, varied[p].key, std::stod(texts[p][choice[p]])))
           run.derived.emplace_back(key, format_double(value, true));
     }
+    require_plain_file_name(run.id, file.string() + ": run id (its folder name)");
     c.runs.push_back(std::move(run));
   }
 }

@@ -8,6 +8,23 @@
 
 namespace sg {
 
+namespace {
+
+// A contour of length `length` sampled at `spacing` must stay a sane number of points: a
+// spacing far too small for the body (or a body far too large) is refused here, with the
+// limit, before any memory is allocated for it.
+constexpr double kMaxContourPoints = 1e6;
+
+void verify_contour_points(double length, double spacing, const char* what) {
+  SG_VERIFY(std::isfinite(length) && length / spacing <= kMaxContourPoints,
+            "contour spacing " << spacing << " is too small for " << what << " of perimeter "
+                               << length << " (" << length / spacing << " contour points, at most "
+                               << kMaxContourPoints
+                               << "): need spacing >= " << length / kMaxContourPoints);
+}
+
+}  // namespace
+
 Polygon make_disc(const Vec2& center, double radius, double spacing) {
   return make_ellipse(center, radius, radius, 0.0, spacing);
 }
@@ -15,6 +32,7 @@ Polygon make_disc(const Vec2& center, double radius, double spacing) {
 Polygon make_ellipse(const Vec2& center, double a, double b, double angle, double spacing) {
   SG_VERIFY(a > 0.0 && b > 0.0, "ellipse semi-axes must be positive, got " << a << ", " << b);
   SG_VERIFY(spacing > 0.0, "contour spacing must be positive, got " << spacing);
+  verify_contour_points(2.0 * std::numbers::pi * std::max(a, b), spacing, "an ellipse");
   // A fine polygon first, then uniform resampling by arc length: parametric angles are
   // not uniform in arc length for an elongated ellipse.
   const int fine =
@@ -38,6 +56,8 @@ Polygon make_ellipse(const Vec2& center, double a, double b, double angle, doubl
 Polygon make_rectangle(const Vec2& lower_left, const Vec2& upper_right, double spacing) {
   SG_VERIFY(upper_right.x() > lower_left.x() && upper_right.y() > lower_left.y(),
             "rectangle corners must be ordered (lower-left then upper-right)");
+  SG_VERIFY(spacing > 0.0, "contour spacing must be positive, got " << spacing);
+  verify_contour_points(2.0 * (upper_right - lower_left).sum(), spacing, "a rectangle");
   const Vec2 corners[4] = {lower_left, Vec2(upper_right.x(), lower_left.y()), upper_right,
                            Vec2(lower_left.x(), upper_right.y())};
   Polygon out;

@@ -38,6 +38,7 @@
 #include <utility>
 
 #include "core/error.h"
+#include "geometry/polygon.h"
 
 namespace sg {
 
@@ -230,10 +231,17 @@ void verify_input(const Polygon& boundary, const DomainMeshParams& params,
             "body '" << body_name << "': node spacing h=" << h
                      << " is too large for a body of equivalent diameter " << equivalent_diameter
                      << " (need h <= " << 0.5 * equivalent_diameter << ")");
+  SG_VERIFY(h >= equivalent_diameter / kMaxDiameterPerSpacing,
+            "body '" << body_name << "': node spacing h=" << h
+                     << " is too small for a body of equivalent diameter " << equivalent_diameter
+                     << " (need h >= " << equivalent_diameter / kMaxDiameterPerSpacing << ")");
+  // Few contour points: the contour was sampled too coarsely for the body, i.e. at a spacing
+  // too large for it (sampled at h, it has about perimeter / h points).
   SG_VERIFY(boundary.size() >= 8, "body '" << body_name << "': node spacing h=" << h
                                            << " is too large for the body: its contour has "
                                            << boundary.size()
-                                           << " points, need at least 8 (sample it at h)");
+                                           << " points, need at least 8 (sampled at h: need h <= "
+                                           << perimeter(boundary) / 8.0 << ")");
 }
 
 Vec2 to_vec(const Point& p) {

@@ -42,8 +42,12 @@ struct DomainMesh {
 // (CGAL shape bound 0.125); Lloyd smoothing usually raises it.
 // Throws sg::Error naming `body_name` for a contour with fewer than 3 points, a clockwise or
 // self-intersecting contour, coincident consecutive points, non-finite coordinates, a
-// non-positive spacing, a spacing too large for the body, negative smoothing iterations or a
-// grading below 1.
+// non-positive spacing, a spacing too large or too small for the body (below its equivalent
+// diameter / kMaxDiameterPerSpacing), negative smoothing iterations or a grading below 1.
+// The finest node spacing accepted for a body of equivalent diameter D is D / this: about
+// 3 million nodes in a disc.
+inline constexpr double kMaxDiameterPerSpacing = 2000.0;
+
 DomainMesh mesh_domain(const Polygon& boundary, const DomainMeshParams& params,
                        const std::string& body_name);
 

@@ -13,6 +13,7 @@
 #include "analysis/coherence.h"
 #include "analysis/velocity_grid.h"
 #include "core/error.h"
+#include "core/file_name.h"
 #include "render/coherence_frames.h"
 #include "render/colormap.h"
 
@@ -668,6 +669,7 @@ RenderResult render_run(const fs::path& run_dir, const RenderOptions& options) {
                   with_margin(extent.world, options.periodic.has_value()), !style.categorical);
 
   // Pass 2: the pictures.
+  require_plain_file_name(options.field, "render --field (names its pictures)");
   const fs::path out_dir = run_dir / "render";
   fs::create_directories(out_dir);
   const std::size_t first = options.last_frame_only ? entries.size() - 1 : 0;

@@ -12,8 +12,7 @@ CheckpointOutput::CheckpointOutput(RunContext& context)
 void CheckpointOutput::begin(bool resumed) {
   if (resumed) return;
   context_.loop.next_checkpoint_time = period_;
-  // A checkpoint left by an earlier run in this folder must not be resumed into this one.
-  std::filesystem::remove(context_.folder.checkpoint());
+  // (A checkpoint left by an earlier run in this folder was removed by prepare_run_directory.)
 }
 
 void CheckpointOutput::after_step(const StepTaken&) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "io/run_directory.h"
 #include "run/checkpoint_output.h"
 #include "run/progress_output.h"
 #include "run/run_log.h"
@@ -20,10 +21,12 @@ namespace {
 
 using clock = std::chrono::steady_clock;
 
+// Checks the name and the folder, removes an old checkpoint unless resuming
+// (io/run_directory.h): a run writes and deletes only inside <output root>/<name>/.
 RunFolder run_folder(const ScenarioDef& scenario, const RunOptions& options) {
   const std::filesystem::path root =
       options.output_root_override.empty() ? scenario.output_root : options.output_root_override;
-  return RunFolder{root / scenario.name};
+  return RunFolder{prepare_run_directory(root, scenario.name, options.resume)};
 }
 
 // Checks what a resume needs, then creates the folders of the outputs.
@@ -87,7 +90,7 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
   const clock::time_point start = clock::now();
   const RunFolder folder = run_folder(scenario, options);
   prepare_folder(folder, scenario, options.resume);
-  Simulation sim(scenario);
+  Simulation sim(scenario, options.progress);
   RunLoopState loop;  // what the outputs have written and when they write next (checkpointed)
   RunContext context{scenario, folder, sim, loop, 1e-12 * scenario.duration};
 

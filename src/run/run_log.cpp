@@ -43,7 +43,7 @@ void write_model(std::ostream& out, const Simulation& sim) {
         << model.bodies[static_cast<std::size_t>(stable.limiting_body)].name << "'), "
         << (stable.damping_limited ? "damping-limited" : "wave-speed-limited")
         << ", dt = " << stable.dt << "\n";
-  out << sim.mass_scaling_note << "# first time step: " << sim.first_dt
+  out << sim.mass_scaling_note << sim.initial_state_note << "# first time step: " << sim.first_dt
       << " (adaptive: see docs/scenario.md [time])\n";
 }
 

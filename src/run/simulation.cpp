@@ -1,5 +1,6 @@
 #include "run/simulation.h"
 
+#include "scenario/geometry_checks.h"
 #include "solver/mass_scaling.h"
 
 namespace sg {
@@ -20,8 +21,13 @@ std::string scale_masses(const ScenarioDef& s, Model& model, const ContactSystem
   return "# " + describe(report, model) + "\n";
 }
 
-StepControlParams step_control_params(const ScenarioDef& s) {
+StepControlParams step_control_params(const ScenarioDef& s, const Model& model,
+                                      std::ostream* progress) {
   StepControlParams p;
+  p.on_step_collapse = [&model, progress](const StableStep& now, double first_dt) {
+    if (progress)
+      *progress << "\nsoftgrain: warning: " << describe_step_collapse(model, now, first_dt) << "\n";
+  };
   p.safety = s.time_step_safety;
   p.fixed_step = s.fixed_time_step;
   p.reestimate_interval = s.reestimate_interval;
@@ -31,12 +37,13 @@ StepControlParams step_control_params(const ScenarioDef& s) {
 
 }  // namespace
 
-Simulation::Simulation(const ScenarioDef& scenario)
+Simulation::Simulation(const ScenarioDef& scenario, std::ostream* progress)
     : model(build_model(scenario)),
       contacts(make_contacts(scenario, model)),
       mass_scaling_note(scale_masses(scenario, model, contacts.get())),
+      initial_state_note(check_initial_state(scenario, model, contacts != nullptr, progress)),
       solver(model, contacts.get()),
-      controller(solver, contacts.get(), step_control_params(scenario)),
+      controller(solver, contacts.get(), step_control_params(scenario, model, progress)),
       first_estimate(controller.last_estimate()),
       first_dt(controller.next_step()),
       // Computed before any restore: the model's fixed data only.

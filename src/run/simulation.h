@@ -4,6 +4,7 @@
 // this run must carry. Built in that order (mass scaling before any estimate, the first step
 // estimated on the built, not yet restored, model: part of what a checkpoint must match).
 #include <memory>
+#include <ostream>
 #include <string>
 
 #include "io/checkpoint.h"
@@ -15,13 +16,17 @@ namespace sg {
 
 class Simulation {
  public:
-  explicit Simulation(const ScenarioDef& scenario);
+  // Warnings about the initial state (and a collapsing step, later) go to `progress` when set.
+  Simulation(const ScenarioDef& scenario, std::ostream* progress = nullptr);
   Simulation(const Simulation&) = delete;  // the solver and the controller hold references
   Simulation& operator=(const Simulation&) = delete;
 
   Model model;
   std::unique_ptr<ContactSystem> contacts;  // null: no contact laws
   std::string mass_scaling_note;            // "# ...\n" for run.log, empty without scaling
+  // Impossible periodic geometry is refused, suspicious initial states are warned about
+  // (scenario/geometry_checks.h): the warnings, "# ...\n" lines for run.log.
+  std::string initial_state_note;
   ExplicitSolver solver;
   StepController controller;
   StableStep first_estimate;  // the controller's estimate of the built model

@@ -7,6 +7,8 @@
 #include "model/kinematics.h"
 #include "scenario/body_builders.h"
 #include "scenario/scenario_readers.h"
+#include "scenario/geometry_checks.h"
+#include "scenario/toml_reader.h"
 
 namespace sg {
 
@@ -82,6 +84,7 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
   }
   read_contact_settings(root, s, cohesive_reach);
   if (!s.contact_laws.empty()) check_contact_laws_cover_materials(root, s);
+  check_scenario_geometry(s, root);  // name, periodic cell, node spacing (docs: "Safety")
   return s;
 }
 

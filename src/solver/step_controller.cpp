@@ -8,6 +8,11 @@
 
 namespace sg {
 
+namespace {
+// A run whose retried step falls below this fraction of the stable step stops with an error.
+constexpr double kSmallestStepFraction = 1e-6;
+}  // namespace
+
 void validate(const StepControlParams& p) {
   SG_VERIFY(p.safety > 0.0 && p.safety <= 1.0,
             "step control: safety must be in (0, 1], got " << p.safety);
@@ -43,6 +48,12 @@ void StepController::estimate() {
   const bool reduced = state_.dt > 0.0 && state_.dt < state_.stable_dt;
   estimate_ = estimate_stable_time_step(solver_.model(), params_.safety, contact_stiffness_);
   state_.stable_dt = estimate_.dt;
+  if (first_stable_dt_ == 0.0) first_stable_dt_ = estimate_.dt;
+  if (params_.on_step_collapse && !collapse_reported_ &&
+      estimate_.dt * kStepCollapseFactor < first_stable_dt_) {
+    collapse_reported_ = true;
+    params_.on_step_collapse(estimate_, first_stable_dt_);
+  }
   state_.since_estimate = 0;
   ++state_.statistics.estimates;
   // A step reduced after a rejection keeps growing back on its own schedule; otherwise the
@@ -135,6 +146,12 @@ double StepController::advance() {
     const double rejected_dt = held_dt_[from];
     estimate();
     state_.dt = std::min(0.5 * rejected_dt, state_.stable_dt);
+    // Retries separated by a few accepted steps each never reach max_halvings: without this
+    // bound such a run halves its step forever (the fuzzer's gravity = 1e300, issue #15).
+    if (state_.dt < kSmallestStepFraction * state_.stable_dt)
+      SG_THROW("step rejected again and again: the step fell to "
+               << state_.dt << ", below " << kSmallestStepFraction << " of the stable step "
+               << state_.stable_dt << "; last: " << note.str());
     state_.since_reduction = 0;
     held_ = 0;
     ++stats.rejected;

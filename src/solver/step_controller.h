@@ -56,6 +56,7 @@
 // raises sg::Error where the fault is known (body, Gauss point, step); advance() catches it,
 // restores a held snapshot (the failed step may have left forces and velocities half updated)
 // and retries, so failure is reported once, after max_halvings retries (core/error.h).
+#include <functional>
 #include <limits>
 #include <string>
 
@@ -65,6 +66,9 @@
 #include "solver/state_snapshot.h"
 
 namespace sg {
+
+// StepControlParams::on_step_collapse: an estimate below the first one / this factor.
+inline constexpr double kStepCollapseFactor = 100.0;
 
 struct StepControlParams {
   double safety = 0.8;              // fraction of the critical step, in (0, 1]
@@ -80,6 +84,9 @@ struct StepControlParams {
   long recovery_steps = 50;  // accepted steps at a reduced step before it grows
   double growth = 1.25;      // growth factor back towards the stable step
   long hold_interval = 25;   // without the energy check: steps between held states
+  // Called once, at the first estimate below the first one / kStepCollapseFactor (a
+  // collapsing step: an extreme state the user should hear of); unset: nothing.
+  std::function<void(const StableStep& now, double first_dt)> on_step_collapse;
 };
 
 // Throws sg::Error naming the key if a value is out of range.
@@ -132,6 +139,8 @@ class StepController {
   StateSnapshot held_state_[2];
   double held_dt_[2] = {0.0, 0.0};
   int held_ = 0, newest_ = 1;
+  double first_stable_dt_ = 0.0;  // this session's first estimate (on_step_collapse)
+  bool collapse_reported_ = false;
   void estimate();
 };
 
