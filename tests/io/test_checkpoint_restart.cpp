@@ -1,4 +1,4 @@
-// Checkpoints and exact restart through the whole run (io/run.h, io/checkpoint.h): a run
+// Checkpoints and exact restart through the whole run (run/run.h, io/checkpoint.h): a run
 // stopped after a checkpoint (as a killed run leaves its folder) and resumed ends with a
 // folder byte-identical to an uninterrupted run's; a damaged checkpoint, or one written for
 // another scenario or other run settings, is refused with one line naming the file and why.

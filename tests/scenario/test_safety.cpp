@@ -13,7 +13,7 @@
 #include "core/error.h"
 #include "core/file_name.h"
 #include "geometry/shapes.h"
-#include "io/run.h"
+#include "run/run.h"
 #include "io/run_directory.h"
 #include "model/kinematics.h"
 #include "scenario/geometry_checks.h"

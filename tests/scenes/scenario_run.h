@@ -1,5 +1,5 @@
 #pragma once
-// Runs a scenario text through `softgrain run`'s engine (io/run.h) on a given number of
+// Runs a scenario text through `softgrain run`'s engine (run/run.h) on a given number of
 // OpenMP threads: the thread-independence and resume tests of the shear cells.
 #include <omp.h>
 
