@@ -160,6 +160,7 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
   summary.profile = profile;
   write_run_log(folder.run_log(), scenario, sim,
                 resume_note + describe_step_control(sim.controller.statistics()) +
+                    describe_viscous_solves(sim.solver.viscous_statistics()) +
                     describe_profile(profile, summary.wall_seconds));
   if (options.progress) announce_end(*options.progress, sim, summary, series, scenario.duration);
   return summary;

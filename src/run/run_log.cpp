@@ -59,6 +59,16 @@ void write_run_log(const std::filesystem::path& path, const ScenarioDef& scenari
   });
 }
 
+std::string describe_viscous_solves(const ViscousSolveStatistics& st) {
+  if (st.solves == 0) return "";
+  std::ostringstream note;
+  note << std::setprecision(4) << "# imex: " << st.solves << " body solves, " << st.iterations
+       << " conjugate-gradient iterations ("
+       << static_cast<double>(st.iterations) / static_cast<double>(st.solves)
+       << " per solve), " << st.factorizations << " factorizations\n";
+  return note.str();
+}
+
 std::string describe_step_control(const StepStatistics& st) {
   std::ostringstream note;
   note << std::setprecision(6) << "# steps: " << st.accepted << " accepted, " << st.rejected

@@ -17,6 +17,9 @@ void write_run_log(const std::filesystem::path& path, const ScenarioDef& scenari
 // The step controller's record of this session ("# steps: ...").
 std::string describe_step_control(const StepStatistics& statistics);
 
+// The IMEX integrator's solves ("" for the explicit one).
+std::string describe_viscous_solves(const ViscousSolveStatistics& statistics);
+
 // The profile: wall seconds and share per phase, and the time per step.
 std::string describe_profile(const StepProfile& profile, double wall_seconds);
 
