@@ -59,7 +59,9 @@ struct Grid {
 
 }  // namespace
 
-void BroadPhase::build(const BroadPhaseInput& input) {
+namespace {
+
+void check_input(const BroadPhaseInput& input) {
   const std::size_t node_count = input.nodes.size();
   const std::size_t segment_count = input.segment_start.size();
   SG_VERIFY(input.node_body.size() == node_count,
@@ -69,7 +71,144 @@ void BroadPhase::build(const BroadPhaseInput& input) {
             "contact broad phase: segment arrays differ in size ("
                 << segment_count << " starts, " << input.segment_end.size() << " ends, "
                 << input.segment_body.size() << " owners)");
+}
 
+// Bounding box of everything, and the widest segment in x.
+struct Extent {
+  Vec2 lo, hi;
+  double widest = 0.0;
+};
+Extent extent_of(const BroadPhaseInput& input) {
+  Extent e{input.nodes[0], input.nodes[0], 0.0};
+  for (const Vec2& p : input.nodes) {
+    e.lo = e.lo.cwiseMin(p);
+    e.hi = e.hi.cwiseMax(p);
+  }
+  for (std::size_t s = 0; s < input.segment_start.size(); ++s) {
+    const Vec2 &a = input.segment_start[s], &b = input.segment_end[s];
+    e.lo = e.lo.cwiseMin(a).cwiseMin(b);
+    e.hi = e.hi.cwiseMax(a).cwiseMax(b);
+    e.widest = std::max(e.widest, std::abs(b.x() - a.x()));
+  }
+  SG_VERIFY(e.lo.allFinite() && e.hi.allFinite(),
+            "contact broad phase: a node or segment position is not finite");
+  return e;
+}
+
+// Cell size: at least `min_cell`; coarser if the grid would have many more cells than
+// objects (memory and clearing cost), which only costs more distance tests.
+Grid choose_grid(const BroadPhaseParams& params, const Extent& e, std::size_t objects,
+                 double min_cell) {
+  const double period = params.x_max - params.x_min;
+  const double max_cells = 4.0 * static_cast<double>(objects) + 16.0;
+  const double width = params.periodic_x ? period : e.hi.x() - e.lo.x();
+  const double height = e.hi.y() - e.lo.y();
+  double cell = min_cell;
+  Grid grid;
+  grid.periodic = params.periodic_x;
+  for (;;) {
+    if (grid.periodic) {
+      grid.x0 = params.x_min;
+      grid.nx = std::max(1, static_cast<int>(std::floor(period / cell)));
+      grid.cell_w = period / grid.nx;  // >= cell: the columns tile the period exactly
+    } else {
+      grid.x0 = e.lo.x();
+      grid.nx = static_cast<int>(std::floor(width / cell)) + 1;
+      grid.cell_w = cell;
+    }
+    grid.y0 = e.lo.y();
+    grid.ny = static_cast<int>(std::floor(height / cell)) + 1;
+    grid.cell_h = cell;
+    const double cells = static_cast<double>(grid.nx) * static_cast<double>(grid.ny);
+    if (cells <= max_cells) return grid;
+    cell *= std::max(1.1, std::sqrt(cells / max_cells));
+  }
+}
+
+// Bins the segments: a segment goes in every cell its bounding box overlaps (counting sort,
+// segment-major, so each cell lists its segments in increasing index order).
+void bin_segments(const BroadPhaseInput& input, const Grid& grid, std::vector<int>& cell_start,
+                  std::vector<int>& cell_segments) {
+  const std::size_t segment_count = input.segment_start.size();
+  const std::size_t cell_count =
+      static_cast<std::size_t>(grid.nx) * static_cast<std::size_t>(grid.ny);
+  cell_start.assign(cell_count + 1, 0);
+  const auto for_each_cell_of_segment = [&](std::size_t s, auto&& visit) {
+    const Vec2 &a = input.segment_start[s], &b = input.segment_end[s];
+    const long long c_lo = grid.column(std::min(a.x(), b.x()));
+    long long c_hi = grid.column(std::max(a.x(), b.x()));
+    if (grid.periodic) c_hi = std::min(c_hi, c_lo + grid.nx - 1);  // all columns at most once
+    const int r_lo = grid.row(std::min(a.y(), b.y())), r_hi = grid.row(std::max(a.y(), b.y()));
+    for (long long c = c_lo; c <= c_hi; ++c) {
+      const int column = grid.wrap_column(c);
+      for (int r = r_lo; r <= r_hi; ++r)
+        visit(grid.cell(column, r));
+    }
+  };
+  for (std::size_t s = 0; s < segment_count; ++s) {
+    for_each_cell_of_segment(s, [&](int c) { ++cell_start[static_cast<std::size_t>(c) + 1]; });
+  }
+  for (std::size_t c = 0; c < cell_count; ++c)
+    cell_start[c + 1] += cell_start[c];
+  cell_segments.resize(static_cast<std::size_t>(cell_start[cell_count]));
+  std::vector<int> fill(cell_start.begin(), cell_start.end() - 1);
+  for (std::size_t s = 0; s < segment_count; ++s) {
+    for_each_cell_of_segment(s, [&](int c) {
+      cell_segments[static_cast<std::size_t>(fill[static_cast<std::size_t>(c)]++)] =
+          static_cast<int>(s);
+    });
+  }
+}
+
+// Every segment of another body in the 3 x 3 block of cells around node n (distinct columns
+// only: with fewer than 3 columns a periodic block wraps onto itself), within `accept` of the
+// node: appended to the candidates in increasing segment order.
+void query_node(const BroadPhaseParams& params, const BroadPhaseInput& input, const Grid& grid,
+                const std::vector<int>& cell_start, const std::vector<int>& cell_segments,
+                std::size_t n, double accept, std::vector<int>& scratch,
+                std::vector<ContactCandidate>& candidates) {
+  const Vec2& node = input.nodes[n];
+  const long long c_node = grid.column(node.x());
+  const int r_node = grid.row(node.y());
+  int columns[3];
+  int column_count = 0;
+  for (long long dc = -1; dc <= 1; ++dc) {
+    const long long c = c_node + dc;
+    if (!grid.periodic && (c < 0 || c >= grid.nx)) continue;
+    const int column = grid.wrap_column(c);
+    if (std::find(columns, columns + column_count, column) == columns + column_count)
+      columns[column_count++] = column;
+  }
+  scratch.clear();
+  for (int k = 0; k < column_count; ++k) {
+    for (int r = std::max(0, r_node - 1); r <= std::min(grid.ny - 1, r_node + 1); ++r) {
+      const std::size_t c = static_cast<std::size_t>(grid.cell(columns[k], r));
+      for (int i = cell_start[c]; i < cell_start[c + 1]; ++i) {
+        const int s = cell_segments[static_cast<std::size_t>(i)];
+        if (input.segment_body[static_cast<std::size_t>(s)] != input.node_body[n])
+          scratch.push_back(s);
+      }
+    }
+  }
+  std::sort(scratch.begin(), scratch.end());
+  scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
+  for (const int s : scratch) {
+    const Vec2& a = input.segment_start[static_cast<std::size_t>(s)];
+    const Vec2& b = input.segment_end[static_cast<std::size_t>(s)];
+    // The only image that can be within reach is the nearest one of the segment's centre
+    // (period > 2 reach + widest segment, checked in build).
+    const double shift = nearest_image_shift(params, node, a, b);
+    const double distance = project_on_segment(node + Vec2(shift, 0.0), a, b).distance;
+    if (distance <= accept) candidates.push_back({static_cast<int>(n), s, shift});
+  }
+}
+
+}  // namespace
+
+void BroadPhase::build(const BroadPhaseInput& input) {
+  check_input(input);
+  const std::size_t node_count = input.nodes.size();
+  const std::size_t segment_count = input.segment_start.size();
   ++build_count_;
   built_nodes_.assign(input.nodes.begin(), input.nodes.end());
   built_segment_start_.assign(input.segment_start.begin(), input.segment_start.end());
@@ -84,124 +223,18 @@ void BroadPhase::build(const BroadPhaseInput& input) {
   const double accept = reach * (1.0 + 1e-12);
   const double min_cell = reach * (1.0 + 1e-9);
   const double period = params_.x_max - params_.x_min;
-
-  // Bounding box of everything, and the widest segment in x.
-  Vec2 lo = input.nodes[0], hi = input.nodes[0];
-  double widest = 0.0;
-  for (const Vec2& p : input.nodes) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  for (std::size_t s = 0; s < segment_count; ++s) {
-    const Vec2 &a = input.segment_start[s], &b = input.segment_end[s];
-    lo = lo.cwiseMin(a).cwiseMin(b);
-    hi = hi.cwiseMax(a).cwiseMax(b);
-    widest = std::max(widest, std::abs(b.x() - a.x()));
-  }
-  SG_VERIFY(lo.allFinite() && hi.allFinite(),
-            "contact broad phase: a node or segment position is not finite");
+  const Extent extent = extent_of(input);
   if (params_.periodic_x) {
-    SG_VERIFY(period > 2.0 * reach + widest,
+    SG_VERIFY(period > 2.0 * reach + extent.widest,
               "contact broad phase: the periodic cell (length "
                   << period << ") must be longer than 2 (cutoff + skin) + the widest segment = "
-                  << 2.0 * reach + widest << " so that a node meets one image of a segment");
+                  << 2.0 * reach + extent.widest << " so that a node meets one image of a segment");
   }
-
-  // Cell size: at least `reach`; coarser if the grid would have many more cells than
-  // objects (memory and clearing cost), which only costs more distance tests.
-  const double max_cells = 4.0 * static_cast<double>(node_count + segment_count) + 16.0;
-  const double width = params_.periodic_x ? period : hi.x() - lo.x();
-  const double height = hi.y() - lo.y();
-  double cell = min_cell;
-  Grid grid;
-  grid.periodic = params_.periodic_x;
-  for (;;) {
-    if (grid.periodic) {
-      grid.x0 = params_.x_min;
-      grid.nx = std::max(1, static_cast<int>(std::floor(period / cell)));
-      grid.cell_w = period / grid.nx;  // >= cell: the columns tile the period exactly
-    } else {
-      grid.x0 = lo.x();
-      grid.nx = static_cast<int>(std::floor(width / cell)) + 1;
-      grid.cell_w = cell;
-    }
-    grid.y0 = lo.y();
-    grid.ny = static_cast<int>(std::floor(height / cell)) + 1;
-    grid.cell_h = cell;
-    const double cells = static_cast<double>(grid.nx) * static_cast<double>(grid.ny);
-    if (cells <= max_cells) break;
-    cell *= std::max(1.1, std::sqrt(cells / max_cells));
-  }
-
-  // Bin the segments: a segment goes in every cell its bounding box overlaps (counting
-  // sort, segment-major, so each cell lists its segments in increasing index order).
-  const std::size_t cell_count =
-      static_cast<std::size_t>(grid.nx) * static_cast<std::size_t>(grid.ny);
-  cell_start_.assign(cell_count + 1, 0);
-  const auto for_each_cell_of_segment = [&](std::size_t s, auto&& visit) {
-    const Vec2 &a = input.segment_start[s], &b = input.segment_end[s];
-    const long long c_lo = grid.column(std::min(a.x(), b.x()));
-    long long c_hi = grid.column(std::max(a.x(), b.x()));
-    if (grid.periodic) c_hi = std::min(c_hi, c_lo + grid.nx - 1);  // all columns at most once
-    const int r_lo = grid.row(std::min(a.y(), b.y())), r_hi = grid.row(std::max(a.y(), b.y()));
-    for (long long c = c_lo; c <= c_hi; ++c) {
-      const int column = grid.wrap_column(c);
-      for (int r = r_lo; r <= r_hi; ++r)
-        visit(grid.cell(column, r));
-    }
-  };
-  for (std::size_t s = 0; s < segment_count; ++s) {
-    for_each_cell_of_segment(s, [&](int c) { ++cell_start_[static_cast<std::size_t>(c) + 1]; });
-  }
-  for (std::size_t c = 0; c < cell_count; ++c)
-    cell_start_[c + 1] += cell_start_[c];
-  cell_segments_.resize(static_cast<std::size_t>(cell_start_[cell_count]));
-  std::vector<int> fill(cell_start_.begin(), cell_start_.end() - 1);
-  for (std::size_t s = 0; s < segment_count; ++s) {
-    for_each_cell_of_segment(s, [&](int c) {
-      cell_segments_[static_cast<std::size_t>(fill[static_cast<std::size_t>(c)]++)] =
-          static_cast<int>(s);
-    });
-  }
-
-  // Query every node in index order: the 3 x 3 block of cells around it (distinct columns
-  // only: with fewer than 3 columns a periodic block wraps onto itself).
-  for (std::size_t n = 0; n < node_count; ++n) {
-    const Vec2& node = input.nodes[n];
-    const long long c_node = grid.column(node.x());
-    const int r_node = grid.row(node.y());
-    int columns[3];
-    int column_count = 0;
-    for (long long dc = -1; dc <= 1; ++dc) {
-      const long long c = c_node + dc;
-      if (!grid.periodic && (c < 0 || c >= grid.nx)) continue;
-      const int column = grid.wrap_column(c);
-      if (std::find(columns, columns + column_count, column) == columns + column_count)
-        columns[column_count++] = column;
-    }
-    scratch_.clear();
-    for (int k = 0; k < column_count; ++k) {
-      for (int r = std::max(0, r_node - 1); r <= std::min(grid.ny - 1, r_node + 1); ++r) {
-        const std::size_t c = static_cast<std::size_t>(grid.cell(columns[k], r));
-        for (int i = cell_start_[c]; i < cell_start_[c + 1]; ++i) {
-          const int s = cell_segments_[static_cast<std::size_t>(i)];
-          if (input.segment_body[static_cast<std::size_t>(s)] != input.node_body[n])
-            scratch_.push_back(s);
-        }
-      }
-    }
-    std::sort(scratch_.begin(), scratch_.end());
-    scratch_.erase(std::unique(scratch_.begin(), scratch_.end()), scratch_.end());
-    for (const int s : scratch_) {
-      const Vec2& a = input.segment_start[static_cast<std::size_t>(s)];
-      const Vec2& b = input.segment_end[static_cast<std::size_t>(s)];
-      // The only image that can be within reach is the nearest one of the segment's
-      // centre (period > 2 reach + widest segment, checked above).
-      const double shift = nearest_image_shift(params_, node, a, b);
-      const double distance = project_on_segment(node + Vec2(shift, 0.0), a, b).distance;
-      if (distance <= accept) candidates_.push_back({static_cast<int>(n), s, shift});
-    }
-  }
+  const Grid grid = choose_grid(params_, extent, node_count + segment_count, min_cell);
+  bin_segments(input, grid, cell_start_, cell_segments_);
+  // Query every node in index order.
+  for (std::size_t n = 0; n < node_count; ++n)
+    query_node(params_, input, grid, cell_start_, cell_segments_, n, accept, scratch_, candidates_);
 }
 
 bool BroadPhase::needs_rebuild(const BroadPhaseInput& input) const {

@@ -78,13 +78,14 @@ void append_mapped_row(const ShapeRows& extended, std::size_t point, std::size_t
 
 }  // namespace
 
-PeriodicStripDiscretization discretize_periodic_strip(const Polygon& surface,
-                                                      double closing_shift_x, double back_y,
-                                                      const DiscretizationParams& params,
-                                                      const std::string& body_name) {
+namespace {
+
+// The surface must be finite, strictly monotonic in x, on one side of the back face, and span
+// less than one period.
+void check_strip_input(const Polygon& surface, double closing_shift_x, double back_y, double h,
+                       const std::string& body_name) {
   const std::size_t n_surface = surface.size();
   const double period = std::abs(closing_shift_x);
-  const double h = params.mesh.spacing;
   SG_VERIFY(n_surface >= 3, "body '" << body_name << "': a deformable strip needs at least 3 "
                                      << "surface points, got " << n_surface);
   SG_VERIFY(period > 0.0 && std::isfinite(period),
@@ -111,12 +112,28 @@ PeriodicStripDiscretization discretize_periodic_strip(const Polygon& surface,
   const double span = std::abs(surface.back().x() - surface.front().x());
   SG_VERIFY(span < period, "body '" << body_name << "': the surface spans " << span
                                     << " in x, not less than the period " << period);
+}
 
+// The strip's nodes: the surface points, then per column the nodes below (or above) them down
+// to the back face, at most h apart.
+struct StripColumns {
+  std::vector<Column> columns;
+  std::vector<Vec2> nodes;
+  std::vector<int> node_column;
+  std::vector<int> back_nodes;
+};
+StripColumns build_columns(const Polygon& surface, double back_y, double h, bool material_below) {
+  const std::size_t n_surface = surface.size();
+  StripColumns out;
+  std::vector<Column>& columns = out.columns;
+  std::vector<Vec2>& nodes = out.nodes;
+  std::vector<int>& node_column = out.node_column;
+  std::vector<int>& back_nodes = out.back_nodes;
   // Columns in increasing x; surface point k sits on column c(k).
-  std::vector<Column> columns(n_surface);
-  std::vector<Vec2> nodes(surface.begin(), surface.end());
-  std::vector<int> node_column(n_surface);
-  std::vector<int> back_nodes(n_surface);
+  columns.resize(n_surface);
+  nodes.assign(surface.begin(), surface.end());
+  node_column.resize(n_surface);
+  back_nodes.resize(n_surface);
   for (std::size_t c = 0; c < n_surface; ++c) {
     const std::size_t k = material_below ? n_surface - 1 - c : c;
     const Vec2& top = surface[k];
@@ -141,6 +158,41 @@ PeriodicStripDiscretization discretize_periodic_strip(const Polygon& surface,
     column.nodes = from_back;
     if (!material_below) std::reverse(column.nodes.begin(), column.nodes.end());
   }
+  return out;
+}
+
+// Row-sum lumping as in discretize_mesh: nodal volume = integral of N_I over one period.
+void lump_strip_volumes(BodyDiscretization& d, const std::vector<Vec2>& nodes,
+                        const std::string& body_name) {
+  const std::size_t n = nodes.size();
+  d.lumped_volume.assign(n, 0.0);
+  for (std::size_t g = 0; g < d.gauss_rows.points(); ++g)
+    for (auto k = d.gauss_rows.offset[g]; k < d.gauss_rows.offset[g + 1]; ++k)
+      d.lumped_volume[static_cast<std::size_t>(d.gauss_rows.node[static_cast<std::size_t>(k)])] +=
+          d.gauss_weight[g] * d.gauss_rows.value[static_cast<std::size_t>(k)];
+  for (std::size_t i = 0; i < n; ++i)
+    SG_VERIFY(d.lumped_volume[i] > 0.0, "body '" << body_name << "': node " << i << " at ("
+                                                 << nodes[i].x() << ", " << nodes[i].y()
+                                                 << ") gets a non-positive lumped mass ("
+                                                 << d.lumped_volume[i] << " x density)");
+}
+
+}  // namespace
+
+PeriodicStripDiscretization discretize_periodic_strip(const Polygon& surface,
+                                                      double closing_shift_x, double back_y,
+                                                      const DiscretizationParams& params,
+                                                      const std::string& body_name) {
+  const std::size_t n_surface = surface.size();
+  const double period = std::abs(closing_shift_x);
+  const double h = params.mesh.spacing;
+  check_strip_input(surface, closing_shift_x, back_y, h, body_name);
+  const bool material_below = closing_shift_x < 0.0;
+  StripColumns built = build_columns(surface, back_y, h, material_below);
+  std::vector<Column>& columns = built.columns;
+  std::vector<Vec2>& nodes = built.nodes;
+  std::vector<int>& node_column = built.node_column;
+  std::vector<int>& back_nodes = built.back_nodes;
   // zip_columns matches nodes by their fraction of the column from its lowest node; for a
   // body above its surface the lowest node is the surface one: the same fractions apply.
   std::vector<std::array<int, 3>> triangles, seam;
@@ -224,17 +276,7 @@ PeriodicStripDiscretization discretize_periodic_strip(const Polygon& surface,
     d.contour_offset.push_back(x - hat.centroid);
   }
 
-  // Row-sum lumping as in discretize_mesh: nodal volume = integral of N_I over one period.
-  d.lumped_volume.assign(n, 0.0);
-  for (std::size_t g = 0; g < d.gauss_rows.points(); ++g)
-    for (auto k = d.gauss_rows.offset[g]; k < d.gauss_rows.offset[g + 1]; ++k)
-      d.lumped_volume[static_cast<std::size_t>(d.gauss_rows.node[static_cast<std::size_t>(k)])] +=
-          d.gauss_weight[g] * d.gauss_rows.value[static_cast<std::size_t>(k)];
-  for (std::size_t i = 0; i < n; ++i)
-    SG_VERIFY(d.lumped_volume[i] > 0.0, "body '" << body_name << "': node " << i << " at ("
-                                                 << nodes[i].x() << ", " << nodes[i].y()
-                                                 << ") gets a non-positive lumped mass ("
-                                                 << d.lumped_volume[i] << " x density)");
+  lump_strip_volumes(d, nodes, body_name);
   return strip;
 }
 
