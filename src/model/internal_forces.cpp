@@ -5,23 +5,9 @@
 #include <vector>
 
 #include "core/error.h"
+#include "model/kinematics.h"
 
 namespace sg {
-
-Mat2 body_mean_rotation(const Model& model, const Body& body, const double* ux, const double* uy) {
-  // As model/kinematics.h body_rotation, from the given displacement parameters.
-  double a = 2.0, b = 0.0;
-  for (int i = 0; i < body.node_count(); ++i) {
-    const auto j = static_cast<std::size_t>(body.node_begin + i);
-    const double cx = model.mean_gradient_x[j], cy = model.mean_gradient_y[j];
-    a += ux[i] * cx + uy[i] * cy;  // F11 + F22 - 2
-    b += uy[i] * cx - ux[i] * cy;  // F21 - F12
-  }
-  const double r = std::sqrt(a * a + b * b);
-  Mat2 q;
-  q << a / r, -b / r, b / r, a / r;
-  return q;
-}
 
 BodyForceResult add_body_internal_forces(const Model& model, BodyId body_id, const double* ux,
                                          const double* uy, const double* vx, const double* vy,
@@ -38,7 +24,7 @@ BodyForceResult add_body_internal_forces(const Model& model, BodyId body_id, con
 
   // The corotational damping model turns its strain rate with the body's mean rotation at u.
   const Mat2 rotation = damped && material.damping_model == DampingModel::corotational
-                            ? body_mean_rotation(model, body, ux, uy)
+                            ? body_rotation(model, body, ux, uy).matrix()
                             : Mat2::Identity();
   BodyForceResult result;
   const bool split_viscous = damped && viscous_fx != nullptr;

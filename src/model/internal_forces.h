@@ -29,11 +29,6 @@ BodyForceResult add_body_internal_forces(const Model& model, BodyId body, const 
                                          double* viscous_fx = nullptr,
                                          double* viscous_fy = nullptr);
 
-// The polar rotation of the body's mean deformation gradient at displacement parameters
-// ux, uy (local numbering), as model/kinematics.h body_rotation: the corotational damping
-// model's R.
-Mat2 body_mean_rotation(const Model& model, const Body& body, const double* ux, const double* uy);
-
 // The viscous operator of a deformable body at a fixed deformation: out = C x, where the
 // viscous force of the body under the velocity parameters x is f_v = -C x (C symmetric
 // positive semi-definite, linear in x at fixed F). `gradients` are the body's deformation

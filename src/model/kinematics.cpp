@@ -79,16 +79,28 @@ Vec2 BodyRotation::rotate(const Vec2& d) const {
   return Vec2(c * d.x() - s * d.y(), s * d.x() + c * d.y());
 }
 
+Mat2 BodyRotation::matrix() const {
+  const double r = std::sqrt(r2()), c = a / r, s = b / r;
+  Mat2 q;
+  q << c, -s, s, c;
+  return q;
+}
+
 BodyRotation body_rotation(const Model& model, BodyId body) {
   const Body& b = model.bodies[static_cast<std::size_t>(body)];
+  if (b.kind != BodyKind::deformable) return BodyRotation{};
+  const auto first = static_cast<std::size_t>(b.node_begin);
+  return body_rotation(model, b, model.nodes.ux.data() + first, model.nodes.uy.data() + first);
+}
+
+BodyRotation body_rotation(const Model& model, const Body& body, const double* ux,
+                           const double* uy) {
   BodyRotation q;
-  if (b.kind != BodyKind::deformable) return q;
-  for (int i = b.node_begin; i < b.node_end; ++i) {
-    const auto j = static_cast<std::size_t>(i);
-    const double ux = model.nodes.ux[j], uy = model.nodes.uy[j];
+  for (int i = 0; i < body.node_count(); ++i) {
+    const auto j = static_cast<std::size_t>(body.node_begin + i);
     const double cx = model.mean_gradient_x[j], cy = model.mean_gradient_y[j];
-    q.a += ux * cx + uy * cy;  // F11 + F22 - 2
-    q.b += uy * cx - ux * cy;  // F21 - F12
+    q.a += ux[i] * cx + uy[i] * cy;  // F11 + F22 - 2
+    q.b += uy[i] * cx - ux[i] * cy;  // F21 - F12
   }
   return q;
 }

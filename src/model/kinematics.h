@@ -28,8 +28,13 @@ struct BodyRotation {
   double a = 2.0, b = 0.0;
   double r2() const { return a * a + b * b; }
   Vec2 rotate(const Vec2& d) const;  // Q(theta) d
+  Mat2 matrix() const;               // Q(theta)
 };
 BodyRotation body_rotation(const Model& model, BodyId body);
+// The same from given displacement parameters of the body's nodes (local numbering): the
+// corotational damping model's R at the state the force kernel evaluates.
+BodyRotation body_rotation(const Model& model, const Body& body, const double* ux,
+                           const double* uy);
 
 // Physical position and velocity of node `node` (global): x_I = X_I + sum_J N_J(X_I) u_J for
 // an interior node; a contour node of a deformable body uses its contact-consistent row R_J

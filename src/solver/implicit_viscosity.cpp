@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "model/internal_forces.h"
+#include "model/kinematics.h"
 
 namespace sg {
 
@@ -140,7 +141,7 @@ void ImplicitViscosity::solve(const Model& model, BodyId b, double h, const doub
   }
   const Mat2 rotation = material.damping_model == DampingModel::reference_stiffness
                             ? Mat2::Identity()
-                            : body_mean_rotation(model, body, ux, uy);
+                            : body_rotation(model, body, ux, uy).matrix();
   // Exact for the reference-stiffness and corotational operators; the objective one's start.
   apply_preconditioner(s, rotation, s.rhs, s.x);
   ++s.statistics.solves;

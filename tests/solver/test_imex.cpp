@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "model/internal_forces.h"
 #include "model/kinematics.h"
+#include "scenes/finite_difference_stiffness.h"
 #include "scenes/free_grains.h"
 #include "solver/explicit_solver.h"
 #include "solver/implicit_viscosity.h"
@@ -63,35 +64,10 @@ double norm(const std::vector<double>& v) {
   return std::sqrt(s);
 }
 
-// K0 by central differences of the elastic forces around the reference state (independent of
-// assemble_damping_stiffness).
-Eigen::MatrixXd finite_difference_stiffness(const Model& model) {
-  const int n = nodes(model), dofs = 2 * n;
-  Eigen::MatrixXd k(dofs, dofs);
-  std::vector<double> zero(static_cast<std::size_t>(n), 0.0);
-  const double eps = 1e-6;
-  for (int c = 0; c < dofs; ++c) {
-    std::vector<double> ux(zero), uy(zero), fxp(zero), fyp(zero), fxm(zero), fym(zero);
-    auto& u = (c % 2 == 0) ? ux : uy;
-    u[static_cast<std::size_t>(c / 2)] = eps;
-    add_body_internal_forces(model, 0, ux.data(), uy.data(), zero.data(), zero.data(), fxp.data(),
-                             fyp.data(), false);
-    u[static_cast<std::size_t>(c / 2)] = -eps;
-    add_body_internal_forces(model, 0, ux.data(), uy.data(), zero.data(), zero.data(), fxm.data(),
-                             fym.data(), false);
-    for (int r = 0; r < n; ++r) {
-      const auto i = static_cast<std::size_t>(r);
-      k(2 * r, c) = -(fxp[i] - fxm[i]) / (2 * eps);
-      k(2 * r + 1, c) = -(fyp[i] - fym[i]) / (2 * eps);
-    }
-  }
-  return k;
-}
-
 TEST(DampingModels, ReferenceStiffnessForceIsMinusAlphaK0v) {
   const double alpha = 0.1;
   Model model = damped_disc(alpha, DampingModel::reference_stiffness);
-  const Eigen::MatrixXd k_fd = finite_difference_stiffness(model);
+  const Eigen::MatrixXd k_fd = scenes::finite_difference_stiffness(model);
   const Eigen::MatrixXd k_assembled = Eigen::MatrixXd(assemble_damping_stiffness(model, 0)) / alpha;
   const double k_error = (k_fd - k_assembled).norm() / k_assembled.norm();
   std::printf("K0 assembled vs finite differences of the elastic force: %.2e\n", k_error);
@@ -480,16 +456,17 @@ TEST(Imex, ObjectiveSolveIteratesOnAStrainedGrain) {
     }
     ImplicitViscosity viscosity(model, 1e-9);
     const double h = 3e-3;
-    viscosity.solve(model, 0, h, model.nodes.ux.data(), model.nodes.uy.data(), fx.data(),
-                    fy.data(), dvx.data(), dvy.data());
+    viscosity.solve(model, 0, h, model.nodes.ux.data(), model.nodes.uy.data(), fx.data(), fy.data(),
+                    dvx.data(), dvy.data());
     // Residual of (M + h/2 C) dv = h F with C applied by the force kernel.
     std::vector<Mat2> gradients;
     body_deformation_gradients(model, 0, model.nodes.ux.data(), model.nodes.uy.data(), gradients);
     std::vector<double> cx(n), cy(n);
-    apply_viscous_operator(model, 0, gradients, body_mean_rotation(model, model.bodies[0],
-                                                                   model.nodes.ux.data(),
-                                                                   model.nodes.uy.data()),
-                           dvx.data(), dvy.data(), cx.data(), cy.data());
+    apply_viscous_operator(
+        model, 0, gradients,
+        body_rotation(model, model.bodies[0], model.nodes.ux.data(), model.nodes.uy.data())
+            .matrix(),
+        dvx.data(), dvy.data(), cx.data(), cy.data());
     double residual = 0.0, rhs = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
       const double rx = h * fx[i] - model.nodes.mass[i] * dvx[i] - 0.5 * h * cx[i];
@@ -498,8 +475,8 @@ TEST(Imex, ObjectiveSolveIteratesOnAStrainedGrain) {
       rhs += h * h * (fx[i] * fx[i] + fy[i] * fy[i]);
     }
     const ViscousSolveStatistics st = viscosity.statistics();
-    std::printf("stretch %.3f: %ld CG iterations, relative residual %.2e\n", stretch,
-                st.iterations, std::sqrt(residual / rhs));
+    std::printf("stretch %.3f: %ld CG iterations, relative residual %.2e\n", stretch, st.iterations,
+                std::sqrt(residual / rhs));
     EXPECT_GT(st.iterations, 0) << stretch;
     EXPECT_LT(std::sqrt(residual / rhs), 2e-9) << stretch;
   }

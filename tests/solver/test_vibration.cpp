@@ -20,6 +20,7 @@
 #include <numbers>
 
 #include "model/internal_forces.h"
+#include "scenes/finite_difference_stiffness.h"
 #include "scenes/free_grains.h"
 
 namespace sg {
@@ -109,25 +110,7 @@ TEST(Vibration, LowestNonRigidFrequencyOfADiscMatchesTheAnalyticValue) {
 
   const int n = static_cast<int>(model.node_count());
   const int dofs = 2 * n;
-  Eigen::MatrixXd k(dofs, dofs);
-  std::vector<double> zero(static_cast<std::size_t>(n), 0.0);
-  const double eps = 1e-6;
-  for (int c = 0; c < dofs; ++c) {
-    std::vector<double> ux(zero), uy(zero), fxp(zero), fyp(zero), fxm(zero), fym(zero);
-    auto& u = (c % 2 == 0) ? ux : uy;
-    u[static_cast<std::size_t>(c / 2)] = eps;
-    add_body_internal_forces(model, 0, ux.data(), uy.data(), zero.data(), zero.data(), fxp.data(),
-                             fyp.data(), false);
-    u[static_cast<std::size_t>(c / 2)] = -eps;
-    add_body_internal_forces(model, 0, ux.data(), uy.data(), zero.data(), zero.data(), fxm.data(),
-                             fym.data(), false);
-    for (int r = 0; r < n; ++r) {
-      k(2 * r, c) =
-          -(fxp[static_cast<std::size_t>(r)] - fxm[static_cast<std::size_t>(r)]) / (2 * eps);
-      k(2 * r + 1, c) =
-          -(fyp[static_cast<std::size_t>(r)] - fym[static_cast<std::size_t>(r)]) / (2 * eps);
-    }
-  }
+  const Eigen::MatrixXd k = scenes::finite_difference_stiffness(model);
   // Symmetric up to the finite-difference error: the Galerkin stiffness is symmetric.
   EXPECT_LT((k - k.transpose()).norm(), 1e-6 * k.norm());
   Eigen::VectorXd inv_sqrt_m(dofs);
