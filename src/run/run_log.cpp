@@ -64,8 +64,8 @@ std::string describe_viscous_solves(const ViscousSolveStatistics& st) {
   std::ostringstream note;
   note << std::setprecision(4) << "# imex: " << st.solves << " body solves, " << st.iterations
        << " conjugate-gradient iterations ("
-       << static_cast<double>(st.iterations) / static_cast<double>(st.solves)
-       << " per solve), " << st.factorizations << " factorizations\n";
+       << static_cast<double>(st.iterations) / static_cast<double>(st.solves) << " per solve), "
+       << st.factorizations << " factorizations\n";
   return note.str();
 }
 

@@ -6,14 +6,13 @@
 #include "core/error.h"
 #include "model/kinematics.h"
 #include "scenario/body_builders.h"
-#include "scenario/scenario_readers.h"
 #include "scenario/geometry_checks.h"
+#include "scenario/scenario_readers.h"
 #include "scenario/toml_reader.h"
 
 namespace sg {
 
 namespace {
-
 
 // Every pair of materials in use needs a law: checked here, with the file, not mid-run.
 void check_contact_laws_cover_materials(const TomlReader& root, const ScenarioDef& s) {

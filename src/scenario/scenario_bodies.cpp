@@ -24,8 +24,8 @@ MaterialDef read_material(const TomlReader& t) {
     t.fail("poisson", "expected a number in (-1, 0.5), got " + std::to_string(m.poisson));
   m.density = t.positive("density", 1.0);
   m.damping = t.non_negative("damping", 0.0);
-  const std::string damping_model = t.one_of(
-      "damping_model", {"objective", "corotational", "reference_stiffness"}, "objective");
+  const std::string damping_model =
+      t.one_of("damping_model", {"objective", "corotational", "reference_stiffness"}, "objective");
   m.damping_model = damping_model == "objective"      ? DampingModel::objective
                     : damping_model == "corotational" ? DampingModel::corotational
                                                       : DampingModel::reference_stiffness;

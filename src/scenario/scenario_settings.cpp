@@ -10,8 +10,7 @@ namespace sg {
 void read_time(const TomlReader& root, ScenarioDef& s) {
   if (auto t = root.table("time")) {
     t->reject_unknown_keys({"duration", "safety", "fixed_step", "reestimate_interval",
-                            "step_tolerance", "mass_scaling_step", "integrator",
-                            "imex_tolerance"});
+                            "step_tolerance", "mass_scaling_step", "integrator", "imex_tolerance"});
     s.duration = t->positive("duration");
     s.time_step_safety = t->positive("safety", 0.8);
     if (s.time_step_safety > 1.0) t->fail("safety", "expected a number in (0, 1]");

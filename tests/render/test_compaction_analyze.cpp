@@ -12,10 +12,10 @@
 #include "analysis/csv_table.h"
 #include "analysis/grain_snapshot.h"
 #include "analysis/series.h"
-#include "report/analyze_run.h"
 #include "render/plot_runner.h"
 #include "render/snapshot_renderer.h"
 #include "render/vtu_reader.h"
+#include "report/analyze_run.h"
 #include "tiny_compaction_run.h"
 #include "tiny_run.h"
 
