@@ -34,6 +34,9 @@ void CheckpointOutput::write_now() {
   checkpoint_.fingerprint = sim.fingerprint;
   checkpoint_.loop = loop;
   write_checkpoint(context_.folder.checkpoint(), checkpoint_);
+  // A run resumed from here starts without the IMEX preconditioners' reference states: the
+  // uninterrupted run drops them too, so that both go on with the same factors.
+  sim.solver.refresh_implicit_preconditioners();
   ++written_;
 }
 

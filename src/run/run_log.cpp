@@ -17,6 +17,7 @@ void write_parameters(std::ostream& out, const ScenarioDef& s) {
       << "\nsafety = " << s.time_step_safety << "\nfixed_step = " << s.fixed_time_step
       << "\nmass_scaling_step = " << s.mass_scaling_step << "\nintegrator = \""
       << (s.implicit_viscosity ? "imex" : "explicit") << "\"\nimex_tolerance = " << s.imex_tolerance
+      << "\nimex_refactor_threshold = " << s.imex_refactor_threshold
       << "\n\n[output]\nseries_period = " << s.series_period
       << "\nfield_period = " << s.field_period << "\ncheckpoint_period = " << s.checkpoint_period
       << "\n\n[discretization]\nnode_spacing = " << s.discretization.mesh.spacing
@@ -65,7 +66,8 @@ std::string describe_viscous_solves(const ViscousSolveStatistics& st) {
   note << std::setprecision(4) << "# imex: " << st.solves << " body solves, " << st.iterations
        << " conjugate-gradient iterations ("
        << static_cast<double>(st.iterations) / static_cast<double>(st.solves) << " per solve), "
-       << st.factorizations << " factorizations\n";
+       << st.factorizations << " factorizations, " << st.reassemblies
+       << " reassemblies of the objective operator\n";
   return note.str();
 }
 

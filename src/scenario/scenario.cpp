@@ -109,6 +109,7 @@ Model build_model(const ScenarioDef& scenario) {
   model.gravity = scenario.gravity;
   model.implicit_viscosity = scenario.implicit_viscosity;
   model.implicit_viscosity_tolerance = scenario.imex_tolerance;
+  model.implicit_viscosity_refactor_threshold = scenario.imex_refactor_threshold;
   for (const MaterialDef& m : scenario.materials)
     model.add_material(m);
   auto material_id = [&](const std::string& name) {

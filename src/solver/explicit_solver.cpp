@@ -15,13 +15,18 @@ double EnergyLedger::residual() const {
 ExplicitSolver::ExplicitSolver(Model& model, ContactSystem* contacts)
     : model_(model), contacts_(contacts) {
   if (model.implicit_viscosity)
-    implicit_ = std::make_unique<ImplicitViscosity>(model, model.implicit_viscosity_tolerance);
+    implicit_ = std::make_unique<ImplicitViscosity>(model, model.implicit_viscosity_tolerance,
+                                                    model.implicit_viscosity_refactor_threshold);
 }
 
 ExplicitSolver::~ExplicitSolver() = default;
 
 ViscousSolveStatistics ExplicitSolver::viscous_statistics() const {
   return implicit_ ? implicit_->statistics() : ViscousSolveStatistics{};
+}
+
+void ExplicitSolver::refresh_implicit_preconditioners() {
+  if (implicit_) implicit_->refresh_preconditioners();
 }
 
 // One step, as the algorithm of the header reads: forces at u_n, then velocities, then

@@ -129,6 +129,9 @@ class ExplicitSolver {
   StepProfile& profile() { return profile_; }
   // The IMEX solves so far (all zero for the explicit integrator).
   ViscousSolveStatistics viscous_statistics() const;
+  // IMEX: the objective model's preconditioners are rebuilt at the next step (called where a
+  // checkpoint is written, so that a resumed run repeats the uninterrupted run's factors).
+  void refresh_implicit_preconditioners();
 
  private:
   Model& model_;

@@ -1,5 +1,6 @@
 #include "solver/implicit_viscosity.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
@@ -14,26 +15,25 @@ bool has_implicit_viscosity(const Model& model, BodyId b) {
          model.materials[static_cast<std::size_t>(body.material)].damping > 0.0;
 }
 
-Eigen::SparseMatrix<double> assemble_damping_stiffness(const Model& model, BodyId b) {
+namespace {
+
+// Sums, over the Gauss points of `body`, the 2x2 block block(g, a, c) (row entries a, c of
+// point g) into the DOFs (2 i, 2 i + 1) x (2 j, 2 j + 1) of the entries' local nodes i, j.
+template <class Block>
+Eigen::SparseMatrix<double> assemble_gauss_blocks(const Model& model, BodyId b, Block&& block) {
   const Body& body = model.bodies[static_cast<std::size_t>(b)];
-  const MaterialParams& m = model.materials[static_cast<std::size_t>(body.material)];
   const ShapeRows& rows = model.gauss_rows;
-  const double lambda = m.damping * m.lambda, mu = m.damping * m.mu;
   std::vector<Eigen::Triplet<double>> entries;
   for (int g = body.gauss_begin; g < body.gauss_end; ++g) {
-    const double w = model.gauss_weight[static_cast<std::size_t>(g)];
     for (auto a = rows.offset[g]; a < rows.offset[g + 1]; ++a) {
       const int i = rows.node[a];
-      const double ax = w * rows.dndx[a], ay = w * rows.dndy[a];
       for (auto c = rows.offset[g]; c < rows.offset[g + 1]; ++c) {
         const int j = rows.node[c];
-        const double cx = rows.dndx[c], cy = rows.dndy[c];
-        // The force on node i of sigma = lambda tr(eps) I + 2 mu eps, eps = sym(grad v), for a
-        // unit velocity of node j along x or y: K_ij = B_i^T D B_j.
-        entries.emplace_back(2 * i, 2 * j, (lambda + 2 * mu) * ax * cx + mu * ay * cy);
-        entries.emplace_back(2 * i, 2 * j + 1, lambda * ax * cy + mu * ay * cx);
-        entries.emplace_back(2 * i + 1, 2 * j, lambda * ay * cx + mu * ax * cy);
-        entries.emplace_back(2 * i + 1, 2 * j + 1, (lambda + 2 * mu) * ay * cy + mu * ax * cx);
+        const Mat2 k = block(g, a, c);
+        entries.emplace_back(2 * i, 2 * j, k(0, 0));
+        entries.emplace_back(2 * i, 2 * j + 1, k(0, 1));
+        entries.emplace_back(2 * i + 1, 2 * j, k(1, 0));
+        entries.emplace_back(2 * i + 1, 2 * j + 1, k(1, 1));
       }
     }
   }
@@ -43,35 +43,95 @@ Eigen::SparseMatrix<double> assemble_damping_stiffness(const Model& model, BodyI
   return k;
 }
 
-ImplicitViscosity::ImplicitViscosity(const Model& model, double tolerance)
-    : tolerance_(tolerance), system_of_body_(model.bodies.size(), -1) {
+const MaterialParams& material_of(const Model& model, BodyId b) {
+  return model.materials[static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].material)];
+}
+
+}  // namespace
+
+Eigen::SparseMatrix<double> assemble_damping_stiffness(const Model& model, BodyId b) {
+  const MaterialParams& m = material_of(model, b);
+  const ShapeRows& rows = model.gauss_rows;
+  const double lambda = m.damping * m.lambda, mu = m.damping * m.mu;
+  return assemble_gauss_blocks(model, b, [&](int g, auto a, auto c) {
+    const double w = model.gauss_weight[static_cast<std::size_t>(g)];
+    const double ax = w * rows.dndx[a], ay = w * rows.dndy[a];
+    const double cx = rows.dndx[c], cy = rows.dndy[c];
+    // The force on node i of sigma = lambda tr(eps) I + 2 mu eps, eps = sym(grad v), for a
+    // unit velocity of node j along x or y: K_ij = B_i^T D B_j.
+    Mat2 k;
+    k << (lambda + 2 * mu) * ax * cx + mu * ay * cy, lambda * ax * cy + mu * ay * cx,
+        lambda * ay * cx + mu * ax * cy, (lambda + 2 * mu) * ay * cy + mu * ax * cx;
+    return k;
+  });
+}
+
+Eigen::SparseMatrix<double> assemble_objective_damping(const Model& model, BodyId b,
+                                                       const std::vector<Mat2>& gradients) {
+  const Body& body = model.bodies[static_cast<std::size_t>(b)];
+  const MaterialParams& m = material_of(model, b);
+  const ShapeRows& rows = model.gauss_rows;
+  const double lambda = m.damping * m.lambda, mu = m.damping * m.mu;
+  // B(F) of a row entry with reference gradient G: the Voigt strain rate (E_xx, E_yy, 2 E_xy)
+  // of sym(F^T grad v) for a unit nodal velocity e_d is (F_d0 G_x, F_d1 G_y, F_d0 G_y + F_d1 G_x).
+  using Voigt = Eigen::Matrix<double, 3, 2>;
+  const auto strain_columns = [&](const Mat2& f, auto k) {
+    const double gx = rows.dndx[k], gy = rows.dndy[k];
+    Voigt bk;
+    bk << f(0, 0) * gx, f(1, 0) * gx, f(0, 1) * gy, f(1, 1) * gy, f(0, 0) * gy + f(0, 1) * gx,
+        f(1, 0) * gy + f(1, 1) * gx;
+    return bk;
+  };
+  Eigen::Matrix3d d;  // alpha C0, plane strain, engineering shear strain
+  d << lambda + 2 * mu, lambda, 0, lambda, lambda + 2 * mu, 0, 0, 0, mu;
+  return assemble_gauss_blocks(model, b, [&](int g, auto a, auto c) {
+    const Mat2& f = gradients[static_cast<std::size_t>(g - body.gauss_begin)];
+    const double w = model.gauss_weight[static_cast<std::size_t>(g)];
+    return Mat2(w * strain_columns(f, a).transpose() * d * strain_columns(f, c));
+  });
+}
+
+ImplicitViscosity::ImplicitViscosity(const Model& model, double tolerance,
+                                     double refactor_threshold)
+    : tolerance_(tolerance),
+      refactor_threshold_(refactor_threshold),
+      system_of_body_(model.bodies.size(), -1) {
   SG_VERIFY(tolerance > 0.0 && tolerance < 1.0,
             "imex: the solver tolerance must be in (0, 1), got " << tolerance);
+  SG_VERIFY(refactor_threshold >= 0.0,
+            "imex: the refactorization threshold must be >= 0, got " << refactor_threshold);
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
     const auto id = static_cast<BodyId>(b);
     if (!has_implicit_viscosity(model, id)) continue;
     system_of_body_[b] = static_cast<int>(systems_.size());
     BodySystem& s = *systems_.emplace_back(std::make_unique<BodySystem>());
     s.body = id;
-    s.stiffness = assemble_damping_stiffness(model, id);
+    s.model = material_of(model, id).damping_model;
+    // The objective model's C(F_ref) has the pattern of K0 (and is K0 until a first assembly).
+    s.damping = assemble_damping_stiffness(model, id);
     const Body& body = model.bodies[b];
     s.mass.resize(2 * body.node_count());
     for (int i = 0; i < body.node_count(); ++i) {
       const double m = model.nodes.mass[static_cast<std::size_t>(body.node_begin + i)];
       s.mass[2 * i] = s.mass[2 * i + 1] = m;
     }
-    SparseMatrix pattern = s.stiffness;
+    SparseMatrix pattern = s.damping;
     pattern.diagonal() += s.mass;
     s.factor.analyzePattern(pattern);
   }
 }
 
+void ImplicitViscosity::refresh_preconditioners() {
+  for (auto& s : systems_)
+    s->reference_gradients.clear();
+}
+
 void ImplicitViscosity::factorize(BodySystem& s, double h) {
-  SparseMatrix a = (0.5 * h) * s.stiffness;
+  SparseMatrix a = (0.5 * h) * s.damping;
   a.diagonal() += s.mass;
   s.factor.factorize(a);
   SG_VERIFY(s.factor.info() == Eigen::Success,
-            "imex: the factorization of M + h/2 alpha K0 failed for body " << s.body);
+            "imex: the factorization of M + h/2 C failed for body " << s.body);
   s.factor_h = h;
   ++s.statistics.factorizations;
 }
@@ -88,6 +148,16 @@ void rotate_pairs(const Mat2& r, bool transpose, Eigen::VectorXd& v) {
   }
 }
 
+// max_g max_ij |(Q^T F_g - F_ref,g)_ij|: how far the body's stretch has moved from the
+// reference once its rotation since then is taken out.
+double stretch_change(const std::vector<Mat2>& gradients, const std::vector<Mat2>& reference,
+                      const Mat2& turn) {
+  double change = 0.0;
+  for (std::size_t g = 0; g < gradients.size(); ++g)
+    change = std::max(change, (turn.transpose() * gradients[g] - reference[g]).cwiseAbs().maxCoeff());
+  return change;
+}
+
 }  // namespace
 
 void ImplicitViscosity::apply_preconditioner(BodySystem& s, const Mat2& rotation,
@@ -99,8 +169,7 @@ void ImplicitViscosity::apply_preconditioner(BodySystem& s, const Mat2& rotation
 }
 
 void ImplicitViscosity::apply_operator(const Model& model, BodySystem& s, double h,
-                                       const Mat2& rotation, const Eigen::VectorXd& x,
-                                       Eigen::VectorXd& q) const {
+                                       const Eigen::VectorXd& x, Eigen::VectorXd& q) const {
   const int n = model.bodies[static_cast<std::size_t>(s.body)].node_count();
   s.work_x.resize(n);
   s.work_y.resize(n);
@@ -115,13 +184,59 @@ void ImplicitViscosity::apply_operator(const Model& model, BodySystem& s, double
     xs[i] = x[2 * i];
     ys[i] = x[2 * i + 1];
   }
-  apply_viscous_operator(model, s.body, s.gradients, rotation, xs.data(), ys.data(), cx.data(),
-                         cy.data());
+  // (The objective operator needs no body rotation: C(F) has it in F.)
+  apply_viscous_operator(model, s.body, s.gradients, Mat2::Identity(), xs.data(), ys.data(),
+                         cx.data(), cy.data());
   q.resize(2 * n);
   for (int i = 0; i < n; ++i) {
     q[2 * i] = s.mass[2 * i] * x[2 * i] + 0.5 * h * cx[i];
     q[2 * i + 1] = s.mass[2 * i + 1] * x[2 * i + 1] + 0.5 * h * cy[i];
   }
+}
+
+void ImplicitViscosity::update_reference(const Model& model, BodySystem& s, const Mat2& rotation,
+                                         double h) {
+  const bool stale = s.reference_gradients.empty() ||
+                     stretch_change(s.gradients, s.reference_gradients,
+                                    rotation * s.reference_rotation.transpose()) >
+                         refactor_threshold_;
+  if (stale) {
+    s.damping = assemble_objective_damping(model, s.body, s.gradients);
+    s.reference_gradients = s.gradients;
+    s.reference_rotation = rotation;
+    ++s.statistics.reassemblies;
+  }
+  if (stale || s.factor_h != h) factorize(s, h);
+}
+
+int ImplicitViscosity::conjugate_gradients(const Model& model, BodySystem& s, double h,
+                                           const Mat2& turn) {
+  apply_operator(model, s, h, s.x, s.q);
+  s.r = s.rhs - s.q;
+  const double target = tolerance_ * s.rhs.norm();
+  constexpr int kMaxIterations = 1000;
+  int iterations = 0;
+  if (s.r.norm() > target) {
+    apply_preconditioner(s, turn, s.r, s.z);
+    s.p = s.z;
+    double rz = s.r.dot(s.z);
+    for (; iterations < kMaxIterations && s.r.norm() > target; ++iterations) {
+      apply_operator(model, s, h, s.p, s.q);
+      const double step = rz / s.p.dot(s.q);
+      s.x += step * s.p;
+      s.r -= step * s.q;
+      apply_preconditioner(s, turn, s.r, s.z);
+      const double rz_next = s.r.dot(s.z);
+      s.p = s.z + (rz_next / rz) * s.p;
+      rz = rz_next;
+    }
+  }
+  const Body& body = model.bodies[static_cast<std::size_t>(s.body)];
+  SG_VERIFY(s.r.norm() <= target,
+            "body '" << body.name << "': the implicit viscous solve did not converge in "
+                     << kMaxIterations << " iterations (relative residual "
+                     << s.r.norm() / s.rhs.norm() << ", tolerance " << tolerance_ << ")");
+  return iterations;
 }
 
 void ImplicitViscosity::solve(const Model& model, BodyId b, double h, const double* ux,
@@ -131,48 +246,27 @@ void ImplicitViscosity::solve(const Model& model, BodyId b, double h, const doub
   SG_ASSERT(index >= 0, "body " << b << " has no implicit viscosity");
   BodySystem& s = *systems_[static_cast<std::size_t>(index)];
   const Body& body = model.bodies[static_cast<std::size_t>(b)];
-  const MaterialParams& material = model.materials[static_cast<std::size_t>(body.material)];
   const int n = body.node_count();
-  if (s.factor_h != h) factorize(s, h);
   s.rhs.resize(2 * n);
   for (int i = 0; i < n; ++i) {
     s.rhs[2 * i] = h * fx[i];
     s.rhs[2 * i + 1] = h * fy[i];
   }
-  const Mat2 rotation = material.damping_model == DampingModel::reference_stiffness
+  const Mat2 rotation = s.model == DampingModel::reference_stiffness
                             ? Mat2::Identity()
                             : body_rotation(model, body, ux, uy).matrix();
-  // Exact for the reference-stiffness and corotational operators; the objective one's start.
-  apply_preconditioner(s, rotation, s.rhs, s.x);
   ++s.statistics.solves;
-  if (material.damping_model == DampingModel::objective) {
-    // Preconditioned conjugate gradients on (M + h/2 C(F)) dv = h F.
+  if (s.model == DampingModel::objective) {
     body_deformation_gradients(model, b, ux, uy, s.gradients);
-    apply_operator(model, s, h, rotation, s.x, s.q);
-    s.r = s.rhs - s.q;
-    const double target = tolerance_ * s.rhs.norm();
-    constexpr int kMaxIterations = 1000;
-    int iterations = 0;
-    if (s.r.norm() > target) {
-      apply_preconditioner(s, rotation, s.r, s.z);
-      s.p = s.z;
-      double rz = s.r.dot(s.z);
-      for (; iterations < kMaxIterations && s.r.norm() > target; ++iterations) {
-        apply_operator(model, s, h, rotation, s.p, s.q);
-        const double step = rz / s.p.dot(s.q);
-        s.x += step * s.p;
-        s.r -= step * s.q;
-        apply_preconditioner(s, rotation, s.r, s.z);
-        const double rz_next = s.r.dot(s.z);
-        s.p = s.z + (rz_next / rz) * s.p;
-        rz = rz_next;
-      }
-    }
-    s.statistics.iterations += iterations;
-    SG_VERIFY(s.r.norm() <= target,
-              "body '" << body.name << "': the implicit viscous solve did not converge in "
-                       << kMaxIterations << " iterations (relative residual "
-                       << s.r.norm() / s.rhs.norm() << ", tolerance " << tolerance_ << ")");
+    update_reference(model, s, rotation, h);
+    // The preconditioner's factor is of Q A_ref Q^T with Q the rotation since the reference.
+    const Mat2 turn = rotation * s.reference_rotation.transpose();
+    apply_preconditioner(s, turn, s.rhs, s.x);
+    s.statistics.iterations += conjugate_gradients(model, s, h, turn);
+  } else {
+    if (s.factor_h != h) factorize(s, h);
+    // Exact for the reference-stiffness and corotational operators.
+    apply_preconditioner(s, rotation, s.rhs, s.x);
   }
   for (int i = 0; i < n; ++i) {
     dvx[i] = s.x[2 * i];
@@ -186,6 +280,7 @@ ViscousSolveStatistics ImplicitViscosity::statistics() const {
     total.solves += s->statistics.solves;
     total.iterations += s->statistics.iterations;
     total.factorizations += s->statistics.factorizations;
+    total.reassemblies += s->statistics.reassemblies;
   }
   return total;
 }

@@ -21,9 +21,17 @@
 //                        after turning the right-hand side, exact;
 //   objective            C(F) from S_v = alpha C0 : sym(F^T F_dot), P_v = F S_v, applied
 //                        matrix-free (model/internal_forces.h apply_viscous_operator) and solved
-//                        by conjugate gradients preconditioned with R A0^-1 R^T, started from
-//                        the corotational solution (exact for an undeformed body).
-// Eigen's SimplicialLDLT (AMD ordering) factors A0; no hand-written factorization.
+//                        by conjugate gradients, preconditioned with a factor of the exact
+//                        operator A_ref = M + h/2 C(F_ref) assembled at a reference state of
+//                        the body (assemble_objective_damping) and turned with the body's mean
+//                        rotation since then, Q = R R_ref^T: C(Q F) = Q C(F) Q^T, so a body that
+//                        only turns keeps an exact preconditioner. The factor is refreshed when
+//                        the body's stretch has moved on, max_g |Q^T F_g - F_ref,g| > delta
+//                        (`refactor_threshold`, docs/scenario.md gives the measured cost of
+//                        delta), when h changes, and at the first step after a checkpoint
+//                        (refresh_preconditioners), so that a resumed run repeats the same
+//                        factors as an uninterrupted one.
+// Eigen's SimplicialLDLT (AMD ordering) factors A0 and A_ref; no hand-written factorization.
 //
 // The force the update applied is F* = M dv / h (exactly what moved the velocities, whatever
 // the solve's residual), and the viscous force booked by the ledger is f_v* = f_v(v_n-1/2) +
@@ -46,13 +54,20 @@ bool has_implicit_viscosity(const Model& model, BodyId body);
 struct ViscousSolveStatistics {
   long solves = 0;          // body solves
   long iterations = 0;      // conjugate-gradient iterations (objective model)
-  long factorizations = 0;  // numeric factorizations of A0
+  long factorizations = 0;  // numeric factorizations of A0 or A_ref
+  long reassemblies = 0;    // objective model: assemblies of C(F_ref) at a new reference
 };
 
 class ImplicitViscosity {
  public:
   // `tolerance`: relative residual |r| / |h F| at which conjugate gradients stop.
-  ImplicitViscosity(const Model& model, double tolerance);
+  // `refactor_threshold`: the objective model's delta (above).
+  ImplicitViscosity(const Model& model, double tolerance,
+                    double refactor_threshold = kDefaultRefactorThreshold);
+  static constexpr double kDefaultRefactorThreshold = 0.02;
+
+  // The objective model's next solve of every body assembles and factors its operator anew.
+  void refresh_preconditioners();
 
   // The velocity increment dv of `body` (local numbering) for the step with velocity interval
   // h: solves (M + h/2 C) dv = h F with F = fx, fy (the body's total force, local numbering)
@@ -66,30 +81,47 @@ class ImplicitViscosity {
   using SparseMatrix = Eigen::SparseMatrix<double>;
   struct BodySystem {
     BodyId body = -1;
-    SparseMatrix stiffness;  // alpha K0, DOF 2 i (x) and 2 i + 1 (y) of local node i
-    Eigen::VectorXd mass;    // lumped mass per DOF
-    Eigen::SimplicialLDLT<SparseMatrix> factor;  // of A0 = M + h/2 alpha K0
+    DampingModel model = DampingModel::objective;
+    // alpha K0, or C(F_ref) for the objective model: DOF 2 i (x) and 2 i + 1 (y) of node i
+    SparseMatrix damping;
+    Eigen::VectorXd mass;                        // lumped mass per DOF
+    Eigen::SimplicialLDLT<SparseMatrix> factor;  // of M + h/2 damping
     double factor_h = 0.0;
-    std::vector<Mat2> gradients;  // objective model: F per Gauss point
+    std::vector<Mat2> gradients;            // objective model: F per Gauss point
+    std::vector<Mat2> reference_gradients;  // F_ref, empty until the first assembly
+    Mat2 reference_rotation = Mat2::Identity();
     Eigen::VectorXd rhs, x, r, z, p, q, work_x, work_y, split_x, split_y;  // scratch
     ViscousSolveStatistics statistics;
   };
-  double tolerance_;
+  double tolerance_, refactor_threshold_;
   std::vector<int> system_of_body_;                   // index into systems_, or -1 (explicit)
   std::vector<std::unique_ptr<BodySystem>> systems_;  // (Eigen's factors cannot be moved)
 
   void factorize(BodySystem& system, double h);
-  // z = R A0^-1 R^T r (R block-diagonal per node).
+  // Objective model: C(F_ref) assembled anew (and factored) when refresh_preconditioners()
+  // asked for it or the stretch has moved on by more than the threshold.
+  void update_reference(const Model& model, BodySystem& system, const Mat2& rotation, double h);
+  // The objective model's conjugate gradients from system.x, preconditioned with the factor
+  // turned by `turn` (R R_ref^T); returns the iteration count.
+  int conjugate_gradients(const Model& model, BodySystem& system, double h, const Mat2& turn);
+  // z = R (M + h/2 damping)^-1 R^T r (R block-diagonal per node).
   void apply_preconditioner(BodySystem& system, const Mat2& rotation, const Eigen::VectorXd& r,
                             Eigen::VectorXd& z) const;
-  // q = (M + h/2 C(F)) x, C applied matrix-free.
-  void apply_operator(const Model& model, BodySystem& system, double h, const Mat2& rotation,
-                      const Eigen::VectorXd& x, Eigen::VectorXd& q) const;
+  // q = (M + h/2 C(F)) x, the objective C applied matrix-free at system.gradients.
+  void apply_operator(const Model& model, BodySystem& system, double h, const Eigen::VectorXd& x,
+                      Eigen::VectorXd& q) const;
 };
 
 // alpha K0 of a deformable body: the small-strain plane-strain stiffness of its reference
 // configuration times its damping coefficient, assembled from its Gauss rows
 // (K0_IJ = sum_g w_g B_I^T D B_J), DOF 2 i (x) and 2 i + 1 (y) of local node i.
 Eigen::SparseMatrix<double> assemble_damping_stiffness(const Model& model, BodyId body);
+
+// C(F) of the objective model at the deformation gradients F_g of `body`'s Gauss points
+// (body_deformation_gradients): f_v = C v with P_v = F S_v, S_v = alpha C0 : sym(F^T F_dot),
+// i.e. C = sum_g w_g B_g(F)^T D B_g(F) with B(F) v = sym(F^T grad v) in Voigt form. The same
+// sparsity pattern and entry order as assemble_damping_stiffness, which it equals at F = I.
+Eigen::SparseMatrix<double> assemble_objective_damping(const Model& model, BodyId body,
+                                                       const std::vector<Mat2>& gradients);
 
 }  // namespace sg

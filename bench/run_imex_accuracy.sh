@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Whole runs of bench/scenes/imex-cell.toml (13 time units) for the IMEX accuracy and cost
+# tables of docs/scenario.md and docs/verification.md: for each case "alpha model integrator
+# [seed]" given as arguments (or the default list), runs it on 2 threads, analyzes it and
+# prints one CSV line: alpha, model, integrator, seed, wall seconds, mu, p_wb, solid fraction
+# and the IMEX solve counts from run.log.
+#   bash bench/run_imex_accuracy.sh "0.3 objective imex" "0.3 objective explicit"
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bin=${SOFTGRAIN_BIN:-build-test/app/softgrain}
+out=${SOFTGRAIN_BENCH_OUT:-out-bench}
+cases=("$@")
+[ ${#cases[@]} -eq 0 ] && cases=("0.02 objective explicit" "0.02 objective imex"
+                                 "0.3 objective imex" "0.3 corotational imex")
+echo "alpha,model,integrator,seed,wall_s,mu,p_wb,solid_fraction,imex_note"
+for c in "${cases[@]}"; do
+  read -r alpha model integrator seed <<<"$c"
+  seed=${seed:-3}
+  name="imex-cell-a${alpha}-${model}-${integrator}-s${seed}"
+  scenario="$out/$name.toml"
+  mkdir -p "$out"
+  sed -e "s/^name = .*/name = \"$name\"/" -e "s/^damping = .*/damping = $alpha/" \
+      -e "s/^damping_model = .*/damping_model = \"$model\"/" \
+      -e "s/^integrator = .*/integrator = \"$integrator\"/" -e "s/^seed = .*/seed = $seed/" \
+      bench/scenes/imex-cell.toml > "$scenario"
+  start=$(date +%s.%N)
+  "$bin" run "$scenario" -o "$out" --threads 2 > "$out/$name.stdout"
+  wall=$(echo "$(date +%s.%N) - $start" | bc)
+  "$bin" analyze "$out/$name" > /dev/null
+  summary="$out/$name/analysis/summary.json"
+  read -r mu pwb phi < <(/usr/bin/python3 - "$summary" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))
+def find(d, key):
+    if isinstance(d, dict):
+        for k, v in d.items():
+            if k == key:
+                return v.get("value") if isinstance(v, dict) else v
+            r = find(v, key)
+            if r is not None: return r
+    return None
+print(find(s, "mu"), find(s, "bulk_share"), find(s, "solid_fraction"))
+PY
+)
+  note=$(grep -h "^# imex:" "$out/$name/run.log" | sed 's/,/;/g' || true)
+  echo "$alpha,$model,$integrator,$seed,$wall,$mu,$pwb,$phi,$note"
+done
