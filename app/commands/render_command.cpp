@@ -1,4 +1,5 @@
 // softgrain render RUN_DIR: PNG snapshots of a field (and an MP4 when ffmpeg is present).
+#include <cmath>
 #include <iostream>
 
 #include "analysis/series.h"
@@ -40,7 +41,9 @@ const Registration registration(
        cmd->add_option("run_dir", args->run_dir, "run folder (holds fields.pvd)")->required();
        cmd->add_option("--field", args->field,
                        "von_mises | velocity | velocity_x | velocity_y | body | "
-                       "green_lagrange_norm | strain_rate (d|E|/dt over V/D) | pressure | "
+                       "green_lagrange_norm | strain_rate (increment of |E| over the output "
+                       "interval, over V/D; contact rates on the outlines) | strain_rate_instant "
+                       "| pressure | "
                        "sigma_xx | sigma_yy | sigma_xy | "
                        "displacement | coherence (paper 002 eq. 5 at each grain's centre, "
                        "from grains/NNNNNN.csv; range [-1, 1])")
@@ -68,6 +71,11 @@ const Registration registration(
          if (run.has_scenario) {
            options.periodic = run.periodic;
            options.title = run.name;
+           // As the run normalized them (io/vtk_writer.h global_strain_rate).
+           options.strain_rate_unit =
+               run.shear_cell && std::isfinite(run.parameters.gap) && run.parameters.velocity > 0.0
+                   ? "V/D"
+                   : "1/time";
            if (options.field == "coherence") {
              // Only grains carry a coherence: drop the driven bodies, walls, first bodies.
              std::vector<std::string> driven;

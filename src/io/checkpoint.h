@@ -34,7 +34,9 @@ namespace sg {
 //    (variable-step central difference, solver/explicit_solver.h).
 // 8: contact histories carry the damage laws' and contact damping's state (previous
 //    tractions, stored energy, viscous tractions, damage, intact / unloading flags).
-inline constexpr std::uint32_t kCheckpointFormatVersion = 8;
+// 9: the run loop's last field snapshot (time and nodal strain norms), from which the next
+//    snapshot's strain_rate increment is measured (io/vtk_writer.h).
+inline constexpr std::uint32_t kCheckpointFormatVersion = 9;
 
 // What identifies the scenario a checkpoint belongs to. The counts make the common mistake
 // explicit in the message; the hashes catch the rest.
@@ -73,6 +75,11 @@ struct RunLoopState {
   long top_force_rows = 0;
   PvdEntries field_entries, contact_entries;  // fields.pvd and contacts.pvd so far
   StepControllerState controller;             // the adaptive step (sealed at checkpoints)
+  // The last committed field snapshot: its time and nodal |E| (io/vtk_writer.h
+  // nodal_strain_norms), the start of the next snapshot's strain_rate interval. Empty norms:
+  // no snapshot yet.
+  double strain_snapshot_time = 0.0;
+  std::vector<double> strain_snapshot_norm;
 };
 
 template <class Archive, class State>  // State: RunLoopState or const RunLoopState
@@ -90,6 +97,8 @@ void describe(Archive& archive,
   archive(s.field_entries);
   archive(s.contact_entries);
   archive(s.controller);
+  archive(s.strain_snapshot_time);
+  archive(s.strain_snapshot_norm);
 }
 
 struct Checkpoint {

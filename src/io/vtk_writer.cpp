@@ -4,6 +4,7 @@
 #include <iomanip>
 #include <limits>
 
+#include "core/error.h"
 #include "io/atomic_file.h"
 #include "model/kinematics.h"
 #include "scenario/scenario.h"
@@ -15,9 +16,13 @@ namespace {
 struct NodalFields {
   std::vector<Vec2> position, displacement, velocity;
   std::vector<CauchyStress> stress;
-  std::vector<double> strain_norm, strain_rate;
+  std::vector<double> strain_norm, strain_rate, strain_rate_instant;
   std::vector<int> body_id, material_id;
 };
+
+Mat2 green_lagrange(const Mat2& F) {
+  return 0.5 * (F.transpose() * F - Mat2::Identity());
+}
 
 // The rate of the deformation gradient at a node, F' = sum_J v_J (x) grad0 N_J over the
 // node's own row (the velocity parameters, as F is built from the displacement parameters).
@@ -36,16 +41,22 @@ Mat2 node_deformation_rate(const Model& model, const Body& body, std::size_t nod
 // d|E|/dt with E = (F^T F - I)/2 and E' = sym(F^T F'): E:E'/|E|, and |E'| where E = 0 (the
 // one-sided rate from the undeformed state). Zero for any rigid motion (F^T F' is then skew).
 double strain_norm_rate(const Mat2& F, const Mat2& F_rate) {
-  const Mat2 E = 0.5 * (F.transpose() * F - Mat2::Identity());
+  const Mat2 E = green_lagrange(F);
   const Mat2 FtFr = F.transpose() * F_rate;
   const Mat2 E_rate = 0.5 * (FtFr + FtFr.transpose());
   const double norm = E.norm();
   return norm > 1e-12 ? (E.array() * E_rate.array()).sum() / norm : E_rate.norm();
 }
 
-NodalFields evaluate_fields(const Model& model, double global_strain_rate) {
+NodalFields evaluate_fields(const Model& model, double global_strain_rate,
+                            const StrainInterval& interval) {
   // Normalized by V/D where the caller knows it (a shear cell), else in 1/time.
   const double rate_unit = global_strain_rate > 0.0 ? global_strain_rate : 1.0;
+  SG_VERIFY(interval.previous_norm.empty() || interval.previous_norm.size() == model.node_count(),
+            "strain_rate: " << interval.previous_norm.size()
+                            << " nodal strain norms of the previous snapshot for "
+                            << model.node_count() << " nodes");
+  const bool increment = !interval.previous_norm.empty() && interval.length > 0.0;
   NodalFields f;
   const std::size_t n = model.node_count();
   f.position.resize(n);
@@ -54,6 +65,7 @@ NodalFields evaluate_fields(const Model& model, double global_strain_rate) {
   f.stress.resize(n);
   f.strain_norm.resize(n);
   f.strain_rate.resize(n);
+  f.strain_rate_instant.resize(n);
   f.body_id.resize(n);
   f.material_id.resize(n);
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
@@ -67,8 +79,13 @@ NodalFields evaluate_fields(const Model& model, double global_strain_rate) {
       f.velocity[k] = node_velocity(model, i);
       const Mat2 grad = node_deformation_gradient(model, i);
       f.stress[k] = grad.determinant() > 0.0 ? cauchy_stress(m, grad) : CauchyStress{0, 0, 0, 0};
-      f.strain_norm[k] = (0.5 * (grad.transpose() * grad - Mat2::Identity())).norm();
-      f.strain_rate[k] = strain_norm_rate(grad, node_deformation_rate(model, body, k)) / rate_unit;
+      f.strain_norm[k] = green_lagrange(grad).norm();
+      f.strain_rate_instant[k] =
+          strain_norm_rate(grad, node_deformation_rate(model, body, k)) / rate_unit;
+      // The papers' increment over the output interval; the first snapshot: the instant.
+      f.strain_rate[k] = increment ? std::abs(f.strain_norm[k] - interval.previous_norm[k]) /
+                                         interval.length / rate_unit
+                                   : std::abs(f.strain_rate_instant[k]);
       f.body_id[k] = static_cast<int>(b);
       f.material_id[k] = body.material;
     }
@@ -90,6 +107,7 @@ NodalFields evaluate_fields(const Model& model, double global_strain_rate) {
       f.stress.push_back(CauchyStress{0, 0, 0, 0});
       f.strain_norm.push_back(0.0);
       f.strain_rate.push_back(0.0);
+      f.strain_rate_instant.push_back(0.0);
       f.body_id.push_back(static_cast<int>(b));
       f.material_id.push_back(body.material);
     }
@@ -122,9 +140,27 @@ double global_strain_rate(const ScenarioDef& scenario) {
   return cell->velocity / cell->gap;
 }
 
+std::vector<double> nodal_strain_norms(const Model& model) {
+  std::vector<double> norm(model.node_count());
+  for (std::size_t k = 0; k < norm.size(); ++k)
+    norm[k] = green_lagrange(node_deformation_gradient(model, static_cast<int>(k))).norm();
+  return norm;
+}
+
+std::vector<int> contour_point_field_index(const Model& model) {
+  std::vector<int> index(model.contour_point_count());
+  auto next_rigid_point = static_cast<int>(model.node_count());
+  for (const Body& body : model.bodies)
+    for (int k = body.contour_begin; k < body.contour_end; ++k)
+      index[static_cast<std::size_t>(k)] = body.kind == BodyKind::rigid
+                                               ? next_rigid_point++
+                                               : body.node_begin + (k - body.contour_begin);
+  return index;
+}
+
 void write_vtu_snapshot(const Model& model, const std::filesystem::path& path,
-                        double global_strain_rate) {
-  const NodalFields f = evaluate_fields(model, global_strain_rate);
+                        double global_strain_rate, const StrainInterval& interval) {
+  const NodalFields f = evaluate_fields(model, global_strain_rate, interval);
   const std::size_t n = f.position.size();
   // Cells: the triangles of deformable bodies, then one polygon per rigid body (its contour
   // points follow the field nodes in the point list).
@@ -181,6 +217,8 @@ void write_vtu_snapshot(const Model& model, const std::filesystem::path& path,
     scalar_array(out, "pressure", n, [&](std::size_t i) { return f.stress[i].pressure(); });
     scalar_array(out, "green_lagrange_norm", n, [&](std::size_t i) { return f.strain_norm[i]; });
     scalar_array(out, "strain_rate", n, [&](std::size_t i) { return f.strain_rate[i]; });
+    scalar_array(out, "strain_rate_instant", n,
+                 [&](std::size_t i) { return f.strain_rate_instant[i]; });
     scalar_array(out, "body_id", n, [&](std::size_t i) { return f.body_id[i]; });
     scalar_array(out, "material_id", n, [&](std::size_t i) { return f.material_id[i]; });
     out << "      </PointData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";

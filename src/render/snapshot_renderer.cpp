@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <sstream>
 #include <unordered_map>
@@ -16,6 +17,7 @@
 #include "core/file_name.h"
 #include "render/coherence_frames.h"
 #include "render/colormap.h"
+#include "render/contact_outlines.h"
 
 namespace sg {
 namespace {
@@ -84,12 +86,12 @@ Rgb cool_warm(double t) {
           ((1 - f) * a[2] + f * b[2]) / 255.0};
 }
 
-std::string unit_of(const std::string& field) {
+std::string unit_of(const std::string& field, const std::string& rate_unit) {
   if (field == "coherence") return "1";
   if (field.rfind("velocity", 0) == 0) return "length/time";
   if (field.rfind("displacement", 0) == 0) return "length";
   if (field == "green_lagrange_norm") return "1";
-  if (field == "strain_rate") return "V/D";
+  if (field_shows_contact_rates(field)) return rate_unit.empty() ? "V/D or 1/time" : rate_unit;
   if (field == "von_mises" || field == "pressure" || field.rfind("sigma_", 0) == 0) return "stress";
   return "";
 }
@@ -164,11 +166,13 @@ Layout make_layout(int width, int height, const Bounds& world, bool colour_bar) 
 struct Frame {
   const VtuMesh* mesh = nullptr;
   double time = 0.0;
-  std::string label;  // snapshot number
+  std::string label;                  // snapshot number
+  std::vector<double> contact_value;  // per point: its contact rate (NaN: none); may be empty
 };
 
 struct Style {
   std::string field;
+  std::string rate_unit;  // RenderOptions::strain_rate_unit
   bool categorical = false;
   bool diverging = false;  // cool-warm instead of viridis
   double lo = 0.0, hi = 1.0;
@@ -306,39 +310,60 @@ void draw_shaded_grains(cairo_t* cr, const Layout& l, const Style& s, const VtuM
   cairo_pattern_destroy(mesh);
 }
 
+// A segment a -> b of the picture, b unwrapped to a's periodic image, at each shift it shows.
+void add_segment(cairo_t* cr, const Layout& l, const Style& s, const Vec2& a, Vec2 b) {
+  if (s.periodic) {
+    const double L = s.periodic->second - s.periodic->first;
+    b.x() -= L * std::round((b.x() - a.x()) / L);
+  }
+  for (double shift : shifts_for(s, std::min(a.x(), b.x()), std::max(a.x(), b.x()))) {
+    cairo_move_to(cr, l.px(a.x() + shift), l.py(a.y()));
+    cairo_line_to(cr, l.px(b.x() + shift), l.py(b.y()));
+  }
+}
+
+double outline_width(const Layout& l) {
+  return std::clamp(l.scale * 0.012, 0.6, 1.5);
+}
+
 // Grain outlines: triangle edges used once within a body are its boundary.
 void draw_outlines(cairo_t* cr, const Layout& l, const Style& s, const VtuMesh& m) {
-  std::unordered_map<std::uint64_t, int> edge_count;
-  auto key = [](int a, int b) {
-    if (a > b) std::swap(a, b);
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-           static_cast<std::uint32_t>(b);
-  };
-  for (std::size_t c = 0; c < m.cell_count(); ++c) {
-    if (m.types[c] != kVtkTriangle) continue;
-    const auto cell = m.cell(c);
-    for (int k = 0; k < 3; ++k)
-      ++edge_count[key(cell[static_cast<std::size_t>(k)],
-                       cell[static_cast<std::size_t>((k + 1) % 3)])];
-  }
   cairo_new_path(cr);
-  for (const auto& [e, count] : edge_count) {
-    if (count != 1) continue;
-    Vec2 a = m.points[static_cast<std::size_t>(e >> 32)];
-    Vec2 b = m.points[static_cast<std::size_t>(e & 0xffffffffu)];
-    if (s.periodic) {
-      const double L = s.periodic->second - s.periodic->first;
-      b.x() -= L * std::round((b.x() - a.x()) / L);
-    }
-    for (double shift : shifts_for(s, std::min(a.x(), b.x()), std::max(a.x(), b.x()))) {
-      cairo_move_to(cr, l.px(a.x() + shift), l.py(a.y()));
-      cairo_line_to(cr, l.px(b.x() + shift), l.py(b.y()));
-    }
-  }
+  for (const auto& [a, b] : boundary_edges(m, false))
+    add_segment(cr, l, s, m.points[static_cast<std::size_t>(a)],
+                m.points[static_cast<std::size_t>(b)]);
   cairo_set_source_rgba(cr, 0.1, 0.1, 0.1, 0.75);
-  cairo_set_line_width(cr, std::clamp(l.scale * 0.012, 0.6, 1.5));
+  cairo_set_line_width(cr, outline_width(l));
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   cairo_stroke(cr);
+}
+
+// The contact rates on the outlines (render/contact_outlines.h): the half of each boundary
+// edge (grains and rigid bodies) at a contact's slave point, in the point's colour, wider
+// than the outline so that it reads beside the grain's own shading.
+void draw_contact_outlines(cairo_t* cr, const Layout& l, const Style& s, const VtuMesh& m,
+                           const std::vector<double>& contact_value) {
+  if (contact_value.empty()) return;
+  cairo_set_line_width(cr, std::max(2.5, 3.0 * outline_width(l)));
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+  for (const auto& [a, b] : boundary_edges(m, true)) {
+    const Vec2& pa = m.points[static_cast<std::size_t>(a)];
+    Vec2 pb = m.points[static_cast<std::size_t>(b)];
+    if (s.periodic) {
+      const double L = s.periodic->second - s.periodic->first;
+      pb.x() -= L * std::round((pb.x() - pa.x()) / L);
+    }
+    const Vec2 mid = 0.5 * (pa + pb);
+    for (const auto& [point, from] : {std::make_pair(a, pa), std::make_pair(b, pb)}) {
+      const double v = contact_value[static_cast<std::size_t>(point)];
+      if (!std::isfinite(v)) continue;
+      cairo_new_path(cr);
+      add_segment(cr, l, s, from, mid);
+      const Rgb c = colour_of(s, v);
+      cairo_set_source_rgb(cr, c.r, c.g, c.b);
+      cairo_stroke(cr);
+    }
+  }
 }
 
 void draw_frame(cairo_t* cr, const Layout& l, const Style& s, const Frame& f) {
@@ -363,6 +388,7 @@ void draw_frame(cairo_t* cr, const Layout& l, const Style& s, const Frame& f) {
   else
     draw_shaded_grains(cr, l, s, m, value);
   draw_outlines(cr, l, s, m);
+  draw_contact_outlines(cr, l, s, m, f.contact_value);
   cairo_restore(cr);
 }
 
@@ -418,7 +444,7 @@ void draw_decorations(cairo_t* cr, const Layout& l, const Style& s, const Frame&
   cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
   cairo_set_line_width(cr, 1.0);
   cairo_stroke(cr);
-  const std::string unit = unit_of(s.field);
+  const std::string unit = unit_of(s.field, s.rate_unit);
   draw_text(cr, cx, top - 1.5 * l.font, s.field, 0.85 * l.font);
   if (!unit.empty()) draw_text(cr, cx, top - 0.5 * l.font, "(" + unit + ")", 0.75 * l.font);
   const int ticks = 5;
@@ -545,7 +571,19 @@ struct SeriesExtent {
   Bounds world;
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   std::vector<double> values;
+  std::string contact_note;  // why the contact rates are not drawn (render/contact_outlines.h)
 };
+
+// The contact rates drawn on the outlines are coloured with the field's map: they count in
+// its range.
+void accumulate_contact_range(const fs::path& field_file, std::size_t points, SeriesExtent& e) {
+  for (const double v : contact_rates_on_points(field_file, points, e.contact_note)) {
+    if (!std::isfinite(v)) continue;
+    e.lo = std::min(e.lo, v);
+    e.hi = std::max(e.hi, v);
+    e.values.push_back(v);
+  }
+}
 
 SeriesExtent measure_series(const std::vector<PvdEntry>& entries, const Style& style,
                             const RenderOptions& options, const fs::path& pvd) {
@@ -556,9 +594,11 @@ SeriesExtent measure_series(const std::vector<PvdEntry>& entries, const Style& s
     for (const Vec2& p : m.points)
       e.world.add(p);
     if (coherence) continue;  // computed from the grain snapshots below; range fixed
-    if (!style.categorical && !options.range)
+    if (!style.categorical && !options.range) {
       accumulate_range(m, options.field, e.lo, e.hi, &e.values);
-    else
+      if (field_shows_contact_rates(options.field))
+        accumulate_contact_range(entry.file, m.points.size(), e);
+    } else
       (void)point_scalar(m, options.field);  // fail early on an unknown field
   }
   SG_VERIFY(!e.world.empty(), pvd.string() << ": the snapshots hold no point");
@@ -652,6 +692,7 @@ RenderResult render_run(const fs::path& run_dir, const RenderOptions& options) {
 
   Style style;
   style.field = options.field;
+  style.rate_unit = options.strain_rate_unit;
   style.categorical = options.field == "body" || options.field == "body_id";
   const bool coherence = options.field == "coherence";
   style.diverging = coherence;
@@ -677,22 +718,62 @@ RenderResult render_run(const fs::path& run_dir, const RenderOptions& options) {
     VtuMesh m = read_vtu(entries[i].file);
     if (coherence) add_coherence_array(m, coherence_by_frame[i]);
     const std::string number = entries[i].file.stem().string();
-    Frame frame{&m, entries[i].time, number};
+    Frame frame{&m, entries[i].time, number, {}};
+    if (field_shows_contact_rates(options.field))
+      frame.contact_value =
+          contact_rates_on_points(entries[i].file, m.points.size(), extent.contact_note);
     const fs::path png = out_dir / (options.field + "_" + number + ".png");
     write_png(layout, style, frame, png);
     result.images.push_back(png);
   }
+  if (!extent.contact_note.empty()) add_note(result, extent.contact_note);
   make_movie(entries, options, out_dir, result);
   return result;
 }
 
-std::pair<int, int> png_size(const fs::path& png) {
+namespace {
+
+// The image surface of a PNG file; throws sg::Error naming the file if it cannot be read.
+cairo_surface_t* read_png(const fs::path& png) {
   cairo_surface_t* s = cairo_image_surface_create_from_png(png.c_str());
   const cairo_status_t status = cairo_surface_status(s);
   if (status != CAIRO_STATUS_SUCCESS) {
     cairo_surface_destroy(s);
     SG_THROW("cannot read PNG '" << png.string() << "': " << cairo_status_to_string(status));
   }
+  return s;
+}
+
+}  // namespace
+
+PngPixels png_pixels(const fs::path& png) {
+  cairo_surface_t* s = read_png(png);
+  cairo_surface_t* rgb = cairo_image_surface_create(
+      CAIRO_FORMAT_RGB24, cairo_image_surface_get_width(s), cairo_image_surface_get_height(s));
+  cairo_t* cr = cairo_create(rgb);  // whatever the file's format: drawn onto RGB24
+  cairo_set_source_surface(cr, s, 0, 0);
+  cairo_paint(cr);
+  cairo_destroy(cr);
+  cairo_surface_flush(rgb);
+  PngPixels out;
+  out.width = cairo_image_surface_get_width(rgb);
+  out.height = cairo_image_surface_get_height(rgb);
+  const int stride = cairo_image_surface_get_stride(rgb);
+  const unsigned char* data = cairo_image_surface_get_data(rgb);
+  out.rgb.resize(static_cast<std::size_t>(out.width) * static_cast<std::size_t>(out.height));
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x) {
+      std::uint32_t v = 0;
+      std::memcpy(&v, data + static_cast<std::ptrdiff_t>(y) * stride + 4 * x, 4);
+      out.rgb[static_cast<std::size_t>(y * out.width + x)] = v & 0xffffffu;  // native-endian word
+    }
+  cairo_surface_destroy(rgb);
+  cairo_surface_destroy(s);
+  return out;
+}
+
+std::pair<int, int> png_size(const fs::path& png) {
+  cairo_surface_t* s = read_png(png);
   const std::pair<int, int> size(cairo_image_surface_get_width(s),
                                  cairo_image_surface_get_height(s));
   cairo_surface_destroy(s);

@@ -21,6 +21,13 @@
 // `softgrain analyze` (render/coherence_frames.h). Diverging colour map (Moreland's
 // cool-warm), fixed range [-1, 1]: red counter-clockwise, blue clockwise (with the shear);
 // dark grey where C is undefined (a pore, the layer's edge) and for non-grain bodies.
+//
+// fields "strain_rate" and "strain_rate_instant": the grains shaded by the nodal strain rate,
+// and their outlines (grains and rigid bodies alike) coloured at each contact by the contact
+// rate of contacts/NNNNNN.vtu with the same map (render/contact_outlines.h, io/contact_rate.h):
+// deformation inside grains and between them in one picture. The contact rates count in the
+// colour range. A run without contacts/ draws the grains only.
+#include <cstdint>
 #include <filesystem>
 #include <limits>
 #include <optional>
@@ -48,6 +55,9 @@ struct RenderOptions {
   // non_grain_rows), and the mean grain diameter (NaN: from the first snapshot's areas).
   std::vector<std::string> non_grain_rows;
   double mean_diameter = std::numeric_limits<double>::quiet_NaN();
+  // The unit of strain_rate and contact_rate, for the colour bar: "V/D" for a gap-loaded
+  // shear cell, "1/time" otherwise (io/vtk_writer.h); empty: unknown.
+  std::string strain_rate_unit;
 };
 
 struct RenderResult {
@@ -73,5 +83,16 @@ RenderResult render_run(const std::filesystem::path& run_dir, const RenderOption
 
 // Width and height of a PNG file, read back with Cairo (for tests and checks).
 std::pair<int, int> png_size(const std::filesystem::path& png);
+
+// The pixels of a PNG file, row after row from the top, each 0xRRGGBB (for tests and checks).
+struct PngPixels {
+  int width = 0, height = 0;
+  std::vector<std::uint32_t> rgb;
+  std::uint32_t at(int x, int y) const {
+    return rgb[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+               static_cast<std::size_t>(x)];
+  }
+};
+PngPixels png_pixels(const std::filesystem::path& png);
 
 }  // namespace sg

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "io/contact_rate.h"
 #include "io/contact_vtk.h"
 #include "io/grain_snapshot_writer.h"
 
@@ -29,7 +30,7 @@ void SnapshotOutput::prepare(const RunInstant& now) {
   const auto& entries = fields_pvd_.entries();
   snapshot_due_ = now.time >= context_.loop.next_field_time - context_.time_tolerance &&
                   (entries.empty() || now.time > entries.back().first);
-  if (snapshot_due_) write_state_files();
+  if (snapshot_due_) write_state_files(now.time);
 }
 
 void SnapshotOutput::commit(const StepTaken& step) {
@@ -39,7 +40,7 @@ void SnapshotOutput::commit(const StepTaken& step) {
 }
 
 void SnapshotOutput::finish() {
-  write_state_files();
+  write_state_files(context_.simulation.solver.state().time);
   Simulation& sim = context_.simulation;
   if (sim.contacts) {
     // The final state has had no force evaluation: its contact network is evaluated here,
@@ -54,11 +55,16 @@ void SnapshotOutput::finish() {
   }
 }
 
-void SnapshotOutput::write_state_files() {
+void SnapshotOutput::write_state_files(double time) {
   const std::filesystem::path& dir = context_.folder.dir;
-  write_vtu_snapshot(context_.simulation.model, dir / "fields" / snapshot_name("vtu"),
-                     strain_rate_unit_);
-  write_grain_snapshot(context_.simulation.model, dir / "grains" / snapshot_name("csv"));
+  const Model& model = context_.simulation.model;
+  const RunLoopState& loop = context_.loop;
+  pending_time_ = time;
+  pending_norm_ = nodal_strain_norms(model);
+  const StrainInterval interval{loop.strain_snapshot_norm, time - loop.strain_snapshot_time};
+  write_vtu_snapshot(model, dir / "fields" / snapshot_name("vtu"), strain_rate_unit_, interval);
+  write_grain_snapshot(model, dir / "grains" / snapshot_name("csv"));
+  if (context_.simulation.contacts) compute_contour_velocities(model, contour_velocity_);
 }
 
 void SnapshotOutput::add_to_collections(double time) {
@@ -66,8 +72,11 @@ void SnapshotOutput::add_to_collections(double time) {
   RunLoopState& loop = context_.loop;
   fields_pvd_.add(time, "fields/" + name);
   loop.field_entries = fields_pvd_.entries();
+  loop.strain_snapshot_time = pending_time_;
+  loop.strain_snapshot_norm.swap(pending_norm_);
   if (const ContactSystem* contacts = context_.simulation.contacts.get()) {
-    write_contact_snapshot(*contacts, context_.folder.dir / "contacts" / name);
+    write_contact_snapshot(*contacts, context_.simulation.model, contour_velocity_,
+                           strain_rate_unit_, context_.folder.dir / "contacts" / name);
     contacts_pvd_.add(time, "contacts/" + name);
     loop.contact_entries = contacts_pvd_.entries();
   }

@@ -7,7 +7,16 @@
 // (when field_period < dt): that instant is in the collection already and is not retaken.
 // The final snapshot (finish) is of the final state, whose contact network is evaluated on a
 // copy of the state that is put back after.
+//
+// The interval strain rate (io/vtk_writer.h strain_rate) of snapshot k is measured from the
+// nodal |E| of snapshot k-1: prepare() measures from the last COMMITTED snapshot (the run
+// loop state's strain_snapshot_*, saved in checkpoints) and holds its own norms aside; only
+// commit() makes them the new start. A rolled-back snapshot is measured again from the same
+// start, and a resumed run from the checkpoint's, so that it writes the same bytes as an
+// uninterrupted run. The contact rate of contacts/NNNNNN.vtu (io/contact_vtk.h) takes the
+// contour velocities of t_n, captured in prepare() too (commit() sees the state of t_n+1).
 #include <string>
+#include <vector>
 
 #include "io/vtk_writer.h"
 #include "run/run_observer.h"
@@ -30,9 +39,14 @@ class SnapshotOutput : public RunObserver {
   PvdCollection fields_pvd_, contacts_pvd_;
   bool snapshot_due_ = false;  // prepare() wrote the state files of a due snapshot
   StateSnapshot final_state_;  // finish(): the state put back after the contact evaluation
+  // The snapshot prepare() wrote: its time and nodal |E|, the next interval's start once
+  // committed; and the contour velocities of its instant, for the contact rates.
+  double pending_time_ = 0.0;
+  std::vector<double> pending_norm_;
+  std::vector<Vec2> contour_velocity_;
 
   std::string snapshot_name(const char* extension) const;
-  void write_state_files();
+  void write_state_files(double time);
   void add_to_collections(double time);
 };
 
