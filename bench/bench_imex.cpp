@@ -1,10 +1,10 @@
 // The IMEX integrator against the explicit one on the papers' viscosities
 // (solver/implicit_viscosity.h): a 60-grain cohesive shear cell (L = 20, E = 10, nu = 0.495,
-// node spacing 0.12, as the papers' grains but fewer; bench/scenes/imex-cell.toml), compacted for 3 time units once (IMEX,
-// alpha = 0.02), then for each alpha in {0.02, 0.1, 0.3, 0.5}, damping model and integrator:
-// whole adaptive steps of shearing from that state. Reports the step, the wall seconds per
-// simulated time unit (time per step / dt: the step is constant over the timed steps), the
-// conjugate-gradient iterations per step (objective model), and the share of the wall time
+// node spacing 0.12, as the papers' grains but fewer; bench/scenes/imex-cell.toml), compacted for 3
+// time units once (IMEX, alpha = 0.02), then for each alpha in {0.02, 0.1, 0.3, 0.5}, damping model
+// and integrator: whole adaptive steps of shearing from that state. Reports the step, the wall
+// seconds per simulated time unit (time per step / dt: the step is constant over the timed steps),
+// the conjugate-gradient iterations per step (objective model), and the share of the wall time
 // spent in the velocity phase (the implicit solves).
 //
 //   build/bench/bench_softgrain --benchmark_filter=ImexShearCell --benchmark_min_time=1

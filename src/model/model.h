@@ -184,8 +184,8 @@ struct Model {
   // (an implicit viscosity does not limit the step).
   bool implicit_viscosity = false;
   double implicit_viscosity_tolerance = 1e-9;
-  double implicit_viscosity_refactor_threshold = 0.02;  // objective model (implicit_viscosity.h)
-  Vec2 gravity = Vec2::Zero();  // acceleration (length / time^2)
+  double implicit_viscosity_refactor_threshold = 0.1;  // objective model (implicit_viscosity.h)
+  Vec2 gravity = Vec2::Zero();                         // acceleration (length / time^2)
   // Periodic boundary in x over [x_min, x_max) when periodic_x is set.
   bool periodic_x = false;
   double x_min = 0.0, x_max = 0.0;

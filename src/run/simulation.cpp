@@ -57,8 +57,7 @@ std::vector<double> run_settings(const ScenarioDef& s, double first_dt) {
                            static_cast<double>(s.reestimate_interval),
                            s.mass_scaling_step};
   // (Appended only when set, so that explicit runs keep their checkpoints bitwise.)
-  if (s.implicit_viscosity)
-    v.insert(v.end(), {1.0, s.imex_tolerance, s.imex_refactor_threshold});
+  if (s.implicit_viscosity) v.insert(v.end(), {1.0, s.imex_tolerance, s.imex_refactor_threshold});
   if (!s.contact_laws.empty()) {
     const ContactSettings c = contact_settings(s);
     v.insert(v.end(), {c.cutoff, c.skin});

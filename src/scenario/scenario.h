@@ -79,7 +79,7 @@ struct ScenarioDef {
   double imex_tolerance = 1e-9;  // relative residual of the objective model's iterative solves
   // The objective model's preconditioner is rebuilt when a grain's stretch has moved by more
   // than this since it was built (solver/implicit_viscosity.h).
-  double imex_refactor_threshold = 0.02;
+  double imex_refactor_threshold = 0.1;
   // [output]
   std::filesystem::path output_root = "out";
   double series_period = 0.0;  // time between rows of series.csv (0: 1/200 of duration)

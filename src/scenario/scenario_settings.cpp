@@ -24,7 +24,8 @@ void read_time(const TomlReader& root, ScenarioDef& s) {
     s.implicit_viscosity = t->one_of("integrator", {"explicit", "imex"}, "explicit") == "imex";
     s.imex_tolerance = t->positive("imex_tolerance", s.imex_tolerance);
     if (s.imex_tolerance >= 1.0) t->fail("imex_tolerance", "expected a number in (0, 1)");
-    s.imex_refactor_threshold = t->non_negative("imex_refactor_threshold", s.imex_refactor_threshold);
+    s.imex_refactor_threshold =
+        t->non_negative("imex_refactor_threshold", s.imex_refactor_threshold);
   } else {
     root.fail("time", "required table [time] with 'duration' is missing");
   }

@@ -44,7 +44,8 @@ Eigen::SparseMatrix<double> assemble_gauss_blocks(const Model& model, BodyId b, 
 }
 
 const MaterialParams& material_of(const Model& model, BodyId b) {
-  return model.materials[static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].material)];
+  return model
+      .materials[static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].material)];
 }
 
 }  // namespace
@@ -66,28 +67,81 @@ Eigen::SparseMatrix<double> assemble_damping_stiffness(const Model& model, BodyI
   });
 }
 
-Eigen::SparseMatrix<double> assemble_objective_damping(const Model& model, BodyId b,
-                                                       const std::vector<Mat2>& gradients) {
+namespace {
+
+// The 2x2 blocks of C(F) (header), emit(i, j, block) for every pair of row entries of every
+// Gauss point of `body`, in the order of assemble_gauss_blocks.
+template <class Emit>
+void objective_damping_blocks(const Model& model, BodyId b, const std::vector<Mat2>& gradients,
+                              Emit&& emit) {
   const Body& body = model.bodies[static_cast<std::size_t>(b)];
   const MaterialParams& m = material_of(model, b);
   const ShapeRows& rows = model.gauss_rows;
   const double lambda = m.damping * m.lambda, mu = m.damping * m.mu;
+  Eigen::Matrix3d d;  // alpha C0, plane strain, engineering shear strain
+  d << lambda + 2 * mu, lambda, 0, lambda, lambda + 2 * mu, 0, 0, 0, mu;
   // B(F) of a row entry with reference gradient G: the Voigt strain rate (E_xx, E_yy, 2 E_xy)
   // of sym(F^T grad v) for a unit nodal velocity e_d is (F_d0 G_x, F_d1 G_y, F_d0 G_y + F_d1 G_x).
   using Voigt = Eigen::Matrix<double, 3, 2>;
-  const auto strain_columns = [&](const Mat2& f, auto k) {
-    const double gx = rows.dndx[k], gy = rows.dndy[k];
-    Voigt bk;
-    bk << f(0, 0) * gx, f(1, 0) * gx, f(0, 1) * gy, f(1, 1) * gy, f(0, 0) * gy + f(0, 1) * gx,
-        f(1, 0) * gy + f(1, 1) * gx;
-    return bk;
-  };
-  Eigen::Matrix3d d;  // alpha C0, plane strain, engineering shear strain
-  d << lambda + 2 * mu, lambda, 0, lambda, lambda + 2 * mu, 0, 0, 0, mu;
-  return assemble_gauss_blocks(model, b, [&](int g, auto a, auto c) {
+  std::vector<Voigt> strain, stress;  // B_k and w D B_k of the point's entries
+  for (int g = body.gauss_begin; g < body.gauss_end; ++g) {
     const Mat2& f = gradients[static_cast<std::size_t>(g - body.gauss_begin)];
     const double w = model.gauss_weight[static_cast<std::size_t>(g)];
-    return Mat2(w * strain_columns(f, a).transpose() * d * strain_columns(f, c));
+    const auto begin = rows.offset[g], end = rows.offset[g + 1];
+    strain.resize(static_cast<std::size_t>(end - begin));
+    stress.resize(strain.size());
+    for (auto k = begin; k < end; ++k) {
+      const double gx = rows.dndx[k], gy = rows.dndy[k];
+      Voigt& bk = strain[static_cast<std::size_t>(k - begin)];
+      bk << f(0, 0) * gx, f(1, 0) * gx, f(0, 1) * gy, f(1, 1) * gy, f(0, 0) * gy + f(0, 1) * gx,
+          f(1, 0) * gy + f(1, 1) * gx;
+      stress[static_cast<std::size_t>(k - begin)] = w * (d * bk);
+    }
+    for (auto a = begin; a < end; ++a)
+      for (auto c = begin; c < end; ++c)
+        emit(rows.node[a], rows.node[c],
+             Mat2(strain[static_cast<std::size_t>(a - begin)].transpose() *
+                  stress[static_cast<std::size_t>(c - begin)]));
+  }
+}
+
+}  // namespace
+
+Eigen::SparseMatrix<double> assemble_objective_damping(const Model& model, BodyId b,
+                                                       const std::vector<Mat2>& gradients) {
+  std::vector<Eigen::Triplet<double>> entries;
+  objective_damping_blocks(model, b, gradients, [&](int i, int j, const Mat2& k) {
+    entries.emplace_back(2 * i, 2 * j, k(0, 0));
+    entries.emplace_back(2 * i, 2 * j + 1, k(0, 1));
+    entries.emplace_back(2 * i + 1, 2 * j, k(1, 0));
+    entries.emplace_back(2 * i + 1, 2 * j + 1, k(1, 1));
+  });
+  const int dofs = 2 * model.bodies[static_cast<std::size_t>(b)].node_count();
+  Eigen::SparseMatrix<double> c(dofs, dofs);
+  c.setFromTriplets(entries.begin(), entries.end());  // duplicates summed, in entry order
+  return c;
+}
+
+void reassemble_objective_damping(const Model& model, BodyId b, const std::vector<Mat2>& gradients,
+                                  Eigen::SparseMatrix<double>& c) {
+  // In place, in c's fixed pattern (that of K0: the blocks of every pair of nodes sharing a
+  // Gauss row, both DOFs): no triplet list, no sort.
+  SG_ASSERT(c.isCompressed(), "reassemble_objective_damping needs a compressed matrix");
+  std::fill(c.valuePtr(), c.valuePtr() + c.nonZeros(), 0.0);
+  const auto* outer = c.outerIndexPtr();
+  const auto* inner = c.innerIndexPtr();
+  double* values = c.valuePtr();
+  // Position of row 2 i in column `col`; row 2 i + 1 follows it.
+  const auto slot = [&](int col, int i) {
+    const auto* first = inner + outer[col];
+    return static_cast<std::size_t>(std::lower_bound(first, inner + outer[col + 1], 2 * i) - inner);
+  };
+  objective_damping_blocks(model, b, gradients, [&](int i, int j, const Mat2& k) {
+    const std::size_t x = slot(2 * j, i), y = slot(2 * j + 1, i);
+    values[x] += k(0, 0);
+    values[x + 1] += k(1, 0);
+    values[y] += k(0, 1);
+    values[y + 1] += k(1, 1);
   });
 }
 
@@ -154,7 +208,8 @@ double stretch_change(const std::vector<Mat2>& gradients, const std::vector<Mat2
                       const Mat2& turn) {
   double change = 0.0;
   for (std::size_t g = 0; g < gradients.size(); ++g)
-    change = std::max(change, (turn.transpose() * gradients[g] - reference[g]).cwiseAbs().maxCoeff());
+    change =
+        std::max(change, (turn.transpose() * gradients[g] - reference[g]).cwiseAbs().maxCoeff());
   return change;
 }
 
@@ -196,12 +251,12 @@ void ImplicitViscosity::apply_operator(const Model& model, BodySystem& s, double
 
 void ImplicitViscosity::update_reference(const Model& model, BodySystem& s, const Mat2& rotation,
                                          double h) {
-  const bool stale = s.reference_gradients.empty() ||
-                     stretch_change(s.gradients, s.reference_gradients,
-                                    rotation * s.reference_rotation.transpose()) >
-                         refactor_threshold_;
+  const bool stale =
+      s.reference_gradients.empty() ||
+      stretch_change(s.gradients, s.reference_gradients,
+                     rotation * s.reference_rotation.transpose()) > refactor_threshold_;
   if (stale) {
-    s.damping = assemble_objective_damping(model, s.body, s.gradients);
+    reassemble_objective_damping(model, s.body, s.gradients, s.damping);
     s.reference_gradients = s.gradients;
     s.reference_rotation = rotation;
     ++s.statistics.reassemblies;

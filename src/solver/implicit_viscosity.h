@@ -64,7 +64,7 @@ class ImplicitViscosity {
   // `refactor_threshold`: the objective model's delta (above).
   ImplicitViscosity(const Model& model, double tolerance,
                     double refactor_threshold = kDefaultRefactorThreshold);
-  static constexpr double kDefaultRefactorThreshold = 0.02;
+  static constexpr double kDefaultRefactorThreshold = 0.1;
 
   // The objective model's next solve of every body assembles and factors its operator anew.
   void refresh_preconditioners();
@@ -123,5 +123,9 @@ Eigen::SparseMatrix<double> assemble_damping_stiffness(const Model& model, BodyI
 // sparsity pattern and entry order as assemble_damping_stiffness, which it equals at F = I.
 Eigen::SparseMatrix<double> assemble_objective_damping(const Model& model, BodyId body,
                                                        const std::vector<Mat2>& gradients);
+// The same into the values of `c`, which has that pattern already (compressed).
+void reassemble_objective_damping(const Model& model, BodyId body,
+                                  const std::vector<Mat2>& gradients,
+                                  Eigen::SparseMatrix<double>& c);
 
 }  // namespace sg

@@ -528,6 +528,11 @@ TEST(Imex, AssembledObjectiveOperatorIsTheMatrixFreeOne) {
   std::printf("C(F) v assembled vs matrix-free: %.2e\n", std::sqrt(difference) / cv.norm());
   EXPECT_LT(std::sqrt(difference), 1e-13 * cv.norm());
   EXPECT_LT((Eigen::MatrixXd(c) - Eigen::MatrixXd(c).transpose()).norm(), 1e-14 * c.norm());
+  // In place, in K0's pattern (what the solver does): the same matrix.
+  Eigen::SparseMatrix<double> in_place = assemble_damping_stiffness(model, 0);
+  reassemble_objective_damping(model, 0, gradients, in_place);
+  std::printf("C(F) in place vs from triplets: %.2e\n", (in_place - c).norm() / c.norm());
+  EXPECT_LT((in_place - c).norm(), 1e-15 * c.norm());
 }
 
 // The objective solve's preconditioner is the exact operator at a reference state, turned with
