@@ -2,7 +2,10 @@
 // by lane, on random deformation gradients, rates and rotations: J from 1e-3 to 20 and J within
 // 1e-12 of 1, both laws, the three damping models, and padding lanes (F = I, no rate).
 //  - Without a logarithm (Saint-Venant-Kirchhoff, every viscous stress) the batch evaluates the
-//    scalar law's operations in the scalar law's order: bit for bit the same.
+//    scalar law's operations in the scalar law's order: bit for bit the same, where Eigen does
+//    not fuse. Eigen's packet math calls fused multiply-add itself where the instruction set has
+//    it (a SOFTGRAIN_NATIVE build on an FMA machine; -ffp-contract=off does not reach explicit
+//    intrinsics), and the scalar laws then round differently: relative 1e-13 there.
 //  - The neo-Hookean law differs only through ln J (xsimd's log vs std::log, within an ulp or
 //    two): relative 1e-13 of the size of the terms that carry ln J.
 #include <gtest/gtest.h>
@@ -18,6 +21,11 @@ namespace sg {
 namespace {
 
 constexpr int W = kSimdWidth;
+#ifdef __FMA__
+constexpr bool kEigenFuses = true;
+#else
+constexpr bool kEigenFuses = false;
+#endif
 using Lanes = std::array<double, W>;
 
 MaterialParams params(MaterialLaw law, DampingModel model) {
@@ -91,18 +99,32 @@ Samples random_samples(int count) {
   return s;
 }
 
+// Bit for bit where Eigen does not fuse, else relative 1e-13 of the tensor's size.
+void expect_same(const Mat2& batch, const Mat2& scalar) {
+  if (kEigenFuses)
+    ASSERT_LE((batch - scalar).norm(), 1e-13 * scalar.norm());
+  else
+    for (int c = 0; c < 4; ++c)
+      ASSERT_EQ(batch(c), scalar(c));
+}
+void expect_same(double batch, double scalar) {
+  if (kEigenFuses)
+    ASSERT_LE(std::abs(batch - scalar), 1e-13 * std::abs(scalar));
+  else
+    ASSERT_EQ(batch, scalar);
+}
+
 constexpr int kSamples = 64 * 8 * 5;  // a multiple of every SIMD width
 
-TEST(MaterialBatch, SaintVenantKirchhoffIsTheScalarLawBitForBit) {
+TEST(MaterialBatch, SaintVenantKirchhoffIsTheScalarLaw) {
   const MaterialParams m = params(MaterialLaw::saint_venant_kirchhoff, DampingModel::objective);
   const Samples s = random_samples(kSamples);
   for (std::size_t first = 0; first < s.f.size(); first += W) {
     const ElasticBatch b = elastic_response(m, batch_of(s.f, first));
     for (int l = 0; l < W; ++l) {
       const ElasticResponse r = elastic_response(m, s.f[first + static_cast<std::size_t>(l)]);
-      for (int c = 0; c < 4; ++c)
-        ASSERT_EQ(lane(b.first_piola, l)(c), r.first_piola(c)) << "sample " << first + l;
-      ASSERT_EQ(lanes(b.energy_density)[static_cast<std::size_t>(l)], r.energy_density);
+      expect_same(lane(b.first_piola, l), r.first_piola);
+      expect_same(lanes(b.energy_density)[static_cast<std::size_t>(l)], r.energy_density);
     }
   }
 }
@@ -139,7 +161,7 @@ TEST(MaterialBatch, NeoHookeanAgreesWithTheScalarLawToRoundOff) {
   EXPECT_LE(worst_w, 1e-13);
 }
 
-TEST(MaterialBatch, ViscousStressesAreTheScalarOnesBitForBit) {
+TEST(MaterialBatch, ViscousStressesAreTheScalarOnes) {
   const Samples s = random_samples(kSamples);
   const Mat2 r = rotation(2.1);
   for (DampingModel model :
@@ -150,11 +172,8 @@ TEST(MaterialBatch, ViscousStressesAreTheScalarOnesBitForBit) {
       for (int l = 0; l < W; ++l) {
         const std::size_t k = first + static_cast<std::size_t>(l);
         const ViscousResponse v = viscous_response(m, s.f[k], s.rate[k], r);
-        for (int c = 0; c < 4; ++c)
-          ASSERT_EQ(lane(b.first_piola, l)(c), v.first_piola(c))
-              << to_string(model) << ", sample " << k;
-        ASSERT_EQ(lanes(b.power_density)[static_cast<std::size_t>(l)], v.power_density)
-            << to_string(model) << ", sample " << k;
+        expect_same(lane(b.first_piola, l), v.first_piola);
+        expect_same(lanes(b.power_density)[static_cast<std::size_t>(l)], v.power_density);
         if (s.rate[k] == Mat2::Zero()) {
           ASSERT_EQ(lane(b.first_piola, l).norm(), 0.0);
         }

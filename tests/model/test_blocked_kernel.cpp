@@ -3,7 +3,9 @@
 // Gauss point's row once, in order, whatever the number of points per body; the forces and
 // energies are the scalar kernel's bit for bit where no logarithm enters (Saint-Venant-
 // Kirchhoff, the viscous operator of the IMEX integrator) and to round-off through ln J
-// (neo-Hookean); results do not depend on the thread count.
+// (neo-Hookean); results do not depend on the thread count. "Bit for bit" holds where Eigen
+// does not fuse multiply-adds in the scalar laws (tests/material/test_material_batch.cpp); on an
+// FMA build (SOFTGRAIN_NATIVE) the comparison is to round-off (1e-13).
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -18,6 +20,11 @@ namespace sg {
 namespace {
 
 constexpr int W = GaussBlocks::width;
+#ifdef __FMA__
+constexpr bool kEigenFuses = true;
+#else
+constexpr bool kEigenFuses = false;
+#endif
 
 // Discs of three sizes (519, 282 and 99 Gauss points at h = 0.1: none a multiple of 2, 4 or 8),
 // displaced and moving at random (strains of a few percent).
@@ -139,14 +146,14 @@ TEST(BlockedKernel, MatchesTheScalarKernelForEveryLawAndDampingModel) {
       const double worst = worst_difference(blocked, reference);
       std::printf("%s, %s: worst relative difference %.2e\n", to_string(law), to_string(damping),
                   worst);
-      if (law == MaterialLaw::saint_venant_kirchhoff)
+      if (law == MaterialLaw::saint_venant_kirchhoff && !kEigenFuses)
         EXPECT_EQ(worst, 0.0) << "no logarithm: the same operations in the same order";
       else
         EXPECT_LE(worst, 1e-13) << to_string(damping);
     }
 }
 
-TEST(BlockedKernel, ViscousOperatorAndGradientsAreTheScalarOnesBitForBit) {
+TEST(BlockedKernel, ViscousOperatorAndGradientsAreTheScalarOnes) {
   for (DampingModel damping :
        {DampingModel::objective, DampingModel::corotational, DampingModel::reference_stiffness}) {
     MaterialDef material = scenes::elastic_material(MaterialLaw::neo_hookean, 0.05, 0.45);
@@ -168,8 +175,15 @@ TEST(BlockedKernel, ViscousOperatorAndGradientsAreTheScalarOnesBitForBit) {
                              ax.data(), ay.data());
       scenes::reference_viscous_operator(model, b, reference_f, rotation, n.vx.data() + o,
                                          n.vy.data() + o, bx.data(), by.data());
-      ASSERT_EQ(ax, bx) << to_string(damping);
-      ASSERT_EQ(ay, by) << to_string(damping);
+      if (kEigenFuses) {
+        for (std::size_t i = 0; i < count; ++i) {
+          ASSERT_NEAR(ax[i], bx[i], 1e-13 * (max_abs(bx) + max_abs(by))) << to_string(damping);
+          ASSERT_NEAR(ay[i], by[i], 1e-13 * (max_abs(bx) + max_abs(by))) << to_string(damping);
+        }
+      } else {
+        ASSERT_EQ(ax, bx) << to_string(damping);
+        ASSERT_EQ(ay, by) << to_string(damping);
+      }
     }
   }
 }
