@@ -26,7 +26,8 @@ constexpr bool kEigenFuses = true;
 constexpr bool kEigenFuses = false;
 #endif
 
-// Discs of three sizes (519, 282 and 99 Gauss points at h = 0.1: none a multiple of 2, 4 or 8),
+// Discs of three sizes (radii 0.5, 0.37, 0.23 at h = 0.1; GaussBlocks.* checks that one has a
+// number of Gauss points that is not a multiple of W),
 // displaced and moving at random (strains of a few percent).
 Model random_discs(const MaterialDef& material, unsigned seed) {
   Model model;
