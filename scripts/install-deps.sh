@@ -4,6 +4,7 @@
 #   cmake, g++          build (C++20, OpenMP comes with g++)
 #   libeigen3-dev       small dense algebra (2x2 tensors, 3x3 MLS moment matrices, eigen solves in tests)
 #   libcgal-dev         constrained Delaunay triangulation + mesher of grain domains (meshfree/)
+#   libxsimd-dev        SIMD batches and vector log of the force kernel (material/simd.h), header-only
 #   libtomlplusplus-dev TOML scenario files
 #   libcli11-dev        the command line
 #   libgtest-dev        tests; libbenchmark-dev: bench/
@@ -13,7 +14,7 @@
 #   python3-scipy       campaign maps (scattered-data interpolation) and correlations
 #   ffmpeg              the MP4 movies `softgrain render` makes (ffprobe checks them in tests)
 set -euo pipefail
-packages=(cmake g++ make libeigen3-dev libcgal-dev libtomlplusplus-dev libcli11-dev
+packages=(cmake g++ make libeigen3-dev libcgal-dev libxsimd-dev libtomlplusplus-dev libcli11-dev
           libgtest-dev libbenchmark-dev libcairo2-dev nlohmann-json3-dev python3-matplotlib python3-numpy
           python3-scipy ffmpeg)
 missing=()
