@@ -125,6 +125,7 @@ class Reader {
 
   void raw(void* p, std::size_t n) {
     if (n > bytes_.size() - position_) throw Malformed{"the payload ends early"};
+    if (n == 0) return;  // an empty vector's data() may be null, which memcpy may not take
     std::memcpy(p, bytes_.data() + position_, n);
     position_ += n;
   }
