@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Whole runs of bench/scenes/imex-cell.toml (13 time units) for the IMEX accuracy and cost
 # tables of docs/scenario.md and docs/verification.md: for each case "alpha model integrator
-# [seed]" given as arguments (or the default list), runs it on 2 threads, analyzes it and
+# [seed [imex_tolerance]]" given as arguments (or the default list), runs it on 2 threads, analyzes it and
 # prints one CSV line: alpha, model, integrator, seed, wall seconds, mu, p_wb, solid fraction
 # and the IMEX solve counts from run.log. mu, p_wb and the solid fraction are means over
 # t in [5, 13] (2 time units after the shear starts).
@@ -13,16 +13,17 @@ out=${SOFTGRAIN_BENCH_OUT:-out-bench}
 cases=("$@")
 [ ${#cases[@]} -eq 0 ] && cases=("0.02 objective explicit" "0.02 objective imex"
                                  "0.3 objective imex" "0.3 corotational imex")
-echo "alpha,model,integrator,seed,wall_s,mu,p_wb,solid_fraction,imex_note"
+echo "alpha,model,integrator,seed,imex_tolerance,wall_s,mu,p_wb,solid_fraction,imex_note"
 for c in "${cases[@]}"; do
-  read -r alpha model integrator seed <<<"$c"
+  read -r alpha model integrator seed tolerance <<<"$c"
   seed=${seed:-1}
-  name="imex-cell-a${alpha}-${model}-${integrator}-s${seed}"
+  name="imex-cell-a${alpha}-${model}-${integrator}-s${seed}${tolerance:+-tol$tolerance}"
+  tolerance_line=${tolerance:+imex_tolerance = $tolerance}
   scenario="$out/$name.toml"
   mkdir -p "$out"
   sed -e "0,/^name = .*/s//name = \"$name\"/" -e "s/^damping = .*/damping = $alpha/" \
       -e "s/^damping_model = .*/damping_model = \"$model\"/" \
-      -e "s/^integrator = .*/integrator = \"$integrator\"/" -e "s/^seed = .*/seed = $seed/" \
+      -e "s/^integrator = .*/integrator = \"$integrator\"\n$tolerance_line/" -e "s/^seed = .*/seed = $seed/" \
       bench/scenes/imex-cell.toml > "$scenario"
   start=$(date +%s.%N)
   "$bin" run "$scenario" -o "$out" --threads 2 > "$out/$name.stdout" 2>&1
@@ -44,5 +45,5 @@ print(find(s, "mu"), find(s, "bulk_share"), find(s, "solid_fraction"))
 PY
 )
   note=$(grep -h "^# imex:" "$out/$name/run.log" | sed 's/,/;/g' || true)
-  echo "$alpha,$model,$integrator,$seed,$wall,$mu,$pwb,$phi,$note"
+  echo "$alpha,$model,$integrator,$seed,${tolerance:-default},$wall,$mu,$pwb,$phi,$note"
 done

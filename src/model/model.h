@@ -188,7 +188,7 @@ struct Model {
   // tolerance of its iterative solves. Read by the solver and by the stable step estimate
   // (an implicit viscosity does not limit the step).
   bool implicit_viscosity = false;
-  double implicit_viscosity_tolerance = 1e-9;
+  double implicit_viscosity_tolerance = 1e-5;          // default: docs/scenario.md imex_tolerance
   double implicit_viscosity_refactor_threshold = 0.1;  // objective model (implicit_viscosity.h)
   Vec2 gravity = Vec2::Zero();                         // acceleration (length / time^2)
   // Periodic boundary in x over [x_min, x_max) when periodic_x is set.

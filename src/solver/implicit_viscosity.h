@@ -123,9 +123,12 @@ Eigen::SparseMatrix<double> assemble_damping_stiffness(const Model& model, BodyI
 // sparsity pattern and entry order as assemble_damping_stiffness, which it equals at F = I.
 Eigen::SparseMatrix<double> assemble_objective_damping(const Model& model, BodyId body,
                                                        const std::vector<Mat2>& gradients);
-// The same into the values of `c`, which has that pattern already (compressed).
+// The same into the values of `c`, which has that pattern already (compressed). Bodies of up
+// to `largest_tabulated` nodes find the entries' places in a table of n^2 positions, larger
+// ones by binary search (the same values either way).
 void reassemble_objective_damping(const Model& model, BodyId body,
                                   const std::vector<Mat2>& gradients,
-                                  Eigen::SparseMatrix<double>& c);
+                                  Eigen::SparseMatrix<double>& c,
+                                  std::size_t largest_tabulated = 1024);
 
 }  // namespace sg

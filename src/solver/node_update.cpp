@@ -130,9 +130,10 @@ ExplicitSolver::NodeUpdate ExplicitSolver::update_node_velocities(const StepSize
   update.carriers = advance_node_carriers(h, drive_data);
 
   // Sums are kept per body and added in body order: the result does not depend on the number
-  // of threads.
+  // of threads. Dynamic schedule: the implicit solves of the objective model cost from one
+  // to several operator applications per body, and a rebuilt preconditioner more.
   const int body_count = static_cast<int>(model_.bodies.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(dynamic)
   for (int b = 0; b < body_count; ++b) {
     const Body& body = model_.bodies[static_cast<std::size_t>(b)];
     BodySums sums;

@@ -533,6 +533,10 @@ TEST(Imex, AssembledObjectiveOperatorIsTheMatrixFreeOne) {
   reassemble_objective_damping(model, 0, gradients, in_place);
   std::printf("C(F) in place vs from triplets: %.2e\n", (in_place - c).norm() / c.norm());
   EXPECT_LT((in_place - c).norm(), 1e-15 * c.norm());
+  // The same with the binary search that bodies too large for the position table use.
+  Eigen::SparseMatrix<double> searched = assemble_damping_stiffness(model, 0);
+  reassemble_objective_damping(model, 0, gradients, searched, 0);
+  EXPECT_EQ((searched - c).norm(), 0.0);
 }
 
 // The objective solve's preconditioner is the exact operator at a reference state, turned with
