@@ -5,13 +5,14 @@
 //   - steady shear: after compaction the friction coefficient mu = -<F_x>/<F_y> of the top
 //     first body lies in [0.1, 1.1] over both quarters of the second half of the run, and the
 //     normal force has settled (the two quarters' mean normal forces agree within 25%);
-//   - the run folder's series.csv is byte-identical on 1 and 2 threads.
+//   - the run folder's series.csv is byte-identical on 1 and 2 threads;
+//   - under the IMEX integrator at alpha = 0.3, the same balance within 0.1%.
 //
 // The cell: L = 14, 40 soft cohesive grains (E = 10, c = 0.1, alpha = 0.01), fixed gap 3,
-// compaction 3 time units then V = 1 for 9. Measured (2-core x86-64, g++ 12): residual
-// 0.51% of W_ext (it was 9% before the periodic-image and time-centred-release fixes of
-// contact_system.cpp / contact_law.cpp), mu 0.148 and 0.172, normal force 4.80 and 4.39 over t in
-// [6, 9) and [9, 12).
+// compaction 3 time units then V = 1 for 9. Measured (2-core x86-64, g++ 12, 2026-12-02):
+// residual 0.010% of W_ext (it was 9% before the periodic-image and time-centred-release fixes
+// of contact_system.cpp / contact_law.cpp), mu 0.2729 and 0.1293, normal force 5.17 and 4.79
+// over t in [6, 9) and [9, 12).
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -34,8 +35,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string cell_scenario() {
+// The cell; `imex` integrates the grains' damping implicitly (integrator = "imex").
+std::string cell_scenario(double damping = 0.01, bool imex = false) {
   scenes::CohesiveShearCell c;
+  c.damping = damping;
+  if (imex) c.extra_time = "integrator = \"imex\"\n";
   c.duration = 12.0;
   c.series_period = 0.02;
   c.field_period = 6.0;
@@ -51,9 +55,10 @@ std::string cell_scenario() {
 
 using Series = scenes::SeriesText;
 
-Series run_cell(int threads) {
-  const fs::path dir = scenes::process_temp_dir("cell_" + std::to_string(threads));
-  scenes::run_scenario_text(dir, "cell.toml", cell_scenario(), threads);
+Series run_cell(int threads, double damping = 0.01, bool imex = false) {
+  const fs::path dir =
+      scenes::process_temp_dir("cell_" + std::to_string(threads) + (imex ? "_imex" : ""));
+  scenes::run_scenario_text(dir, "cell.toml", cell_scenario(damping, imex), threads);
 
   Series s = scenes::read_series_text(dir / "out" / "cell" / "series.csv");
   fs::remove_all(dir);
@@ -100,6 +105,28 @@ TEST(ShearCellRun, EnergyBalanceSteadyFrictionAndThreadIndependence) {
 
   const Series two = run_cell(2);
   EXPECT_TRUE(one.text == two.text) << "series.csv differs between 1 and 2 threads";
+}
+
+// The same cell under the IMEX integrator at the papers' upper viscosity: the implicit update's
+// viscous work is booked exactly (solver/implicit_viscosity.h), so the ledger closes well
+// within the 1% of the external work asked of it. Measured: residual 0.037% of the external
+// work (the bulk damping dissipates 90% of it). With the implicit correction of the viscous
+// force left out of the booking (node_update.cpp, tried by hand) the residual is 0.33%, so
+// the check is at 0.1%: it sees that booking, which 1% would not.
+TEST(ShearCellRun, ImexLedgerClosesWithinOnePercentOfTheExternalWork) {
+  const Series s = run_cell(1, 0.3, true);
+  ASSERT_GT(s.rows.size(), 500u);
+  const std::vector<double>& last = s.rows.back();
+  const double work = last[s.column("external_work")];
+  const double residual = last[s.column("energy_residual")];
+  const double bulk = last[s.column("damping_dissipation")];
+  std::printf(
+      "imex, alpha 0.3: external work %.5g, bulk dissipation %.5g (%.1f%%), residual %.3g "
+      "(%.3f%%)\n",
+      work, bulk, 100.0 * bulk / work, residual, 100.0 * residual / work);
+  ASSERT_GT(work, 1.0);
+  EXPECT_GT(bulk, 0.5 * work);  // the damping is most of the dissipation
+  EXPECT_LT(std::abs(residual), 0.001 * work);
 }
 
 }  // namespace
