@@ -5,7 +5,8 @@
 # Then, in CI (CI=true) or with SOFTGRAIN_SANITIZE_PASS=1, it builds once more with
 # AddressSanitizer + UBSan (-DSOFTGRAIN_SANITIZE=ON, in build-asan/) and runs the fuzzer and
 # the fast test modules under it: any sanitizer report aborts the process and fails its test.
-# SOFTGRAIN_SANITIZE_PASS=0 skips that pass (on an idle 2-core machine it adds about 22 minutes of build and 7 of tests).
+# SOFTGRAIN_SANITIZE_PASS=0 skips that pass (on an idle 2-core machine it adds about 22 minutes
+# of build and 7 of tests).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
