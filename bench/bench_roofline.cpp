@@ -6,23 +6,30 @@
 //
 //   build/bench/bench_softgrain --benchmark_filter='Triad|Gather|Chase|PeakFlops|Kernel'
 //
-// Kernel counts (per step, from the model's blocks: padded entries P, real entries R, Gauss
-// points G, nodes N; damped neo-Hookean body, objective damping, viscous part kept apart):
-//   bytes  = 20 P (int32 node, two double gradients) + 16 per lane (weight, length, index)
+// Kernel counts (per step, from the model's rows: entries R, Gauss points G, nodes N; damped
+// neo-Hookean body, objective damping, viscous part kept apart; the kernel of
+// model/force_kernel.h, which reads the rows without padding):
+//   bytes  = 20 R (int32 node, two double gradients) + 12 G (weight, row offset)
 //            + 80 N (u, v read; f read and written; f_v written): what must stream in;
-//   flops  = 16 per padded entry (F and F_dot sums) + 12 per padded entry (the terms w P grad N
-//            of the total and the viscous stress) + 4 per real entry (the scatter's subtractions)
+//   flops  = 16 per entry (F and F_dot sums) + 12 per entry (the terms w P grad N of the total
+//            and the viscous stress) + 4 per entry (the subtractions from the forces)
 //            + 110 per Gauss point (the laws: 39 neo-Hookean with its log counted as one,
 //            54 viscous, 17 for F, det F, weights and energies);
-//   loads  = 4 node loads per padded entry (gathers) + 4 per real entry (scatter): indexed
-//            8-byte loads, compared with the gather ceiling at an L1-sized array.
+//   loads  = 4 node values per entry read (u, v) + 4 read and written (f, f_v): indexed 8-byte
+//            values (the kernel moves each node's four as one vector), compared with the gather
+//            ceiling at an L1-sized array.
+// The flop ceiling is that of the kernel version in use: AVX2 (4 doubles) where the processor
+// has it, else the build's width.
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
 #include <chrono>
+#include <string>
 
 #include "../tests/scenes/reference_kernel.h"
 #include "disc_set.h"
+#include "material/simd.h"
+#include "model/force_kernel.h"
 #include "model/internal_forces.h"
 #include "roofline.h"
 
@@ -62,27 +69,38 @@ void PeakFlops(benchmark::State& state) {
 }
 BENCHMARK(PeakFlops)->Iterations(3);
 
+void PeakFlopsAvx2(benchmark::State& state) {
+  if (avx2_force_kernel() == nullptr) {
+    state.SkipWithError("this build or this processor has no AVX2 kernel");
+    return;
+  }
+  for (auto _ : state)
+    state.counters["flops_per_s"] = bench::peak_avx2_flops_per_second(kCeilingSeconds);
+  state.counters["simd_width"] = 4;
+}
+BENCHMARK(PeakFlopsAvx2)->Iterations(3);
+
 struct KernelCounts {
-  double bytes = 0, flops = 0, loads = 0, gauss_points = 0, padded_entries = 0, real_entries = 0;
+  double bytes = 0, flops = 0, loads = 0, gauss_points = 0, entries = 0;
 };
 
 KernelCounts kernel_counts(const Model& model) {
   KernelCounts c;
-  const GaussBlocks& blocks = model.gauss_blocks;
-  for (std::size_t b = 0; b < blocks.blocks(); ++b) {
-    c.padded_entries +=
-        static_cast<double>(blocks.row_offset[b + 1] - blocks.row_offset[b]) * GaussBlocks::width;
-    for (int l = 0; l < GaussBlocks::width; ++l) {
-      const std::size_t lane = b * GaussBlocks::width + static_cast<std::size_t>(l);
-      c.real_entries += blocks.length[lane];
-      c.gauss_points += blocks.gauss[lane] >= 0 ? 1 : 0;
-    }
-  }
-  const double lanes = static_cast<double>(blocks.blocks()) * GaussBlocks::width;
-  c.bytes = 20 * c.padded_entries + 16 * lanes + 80 * static_cast<double>(model.node_count());
-  c.flops = 28 * c.padded_entries + 4 * c.real_entries + 110 * c.gauss_points;
-  c.loads = 4 * c.padded_entries + 4 * c.real_entries;
+  c.entries = static_cast<double>(model.gauss_rows.entries());
+  c.gauss_points = static_cast<double>(model.gauss_rows.points());
+  c.bytes = 20 * c.entries + 12 * c.gauss_points + 80 * static_cast<double>(model.node_count());
+  c.flops = 32 * c.entries + 110 * c.gauss_points;
+  c.loads = 8 * c.entries;
   return c;
+}
+
+// The flop ceiling of the kernel version in use, and its SIMD width.
+double kernel_peak_flops(double seconds) {
+  return std::string(force_kernel().isa) == "avx2" ? bench::peak_avx2_flops_per_second(seconds)
+                                                   : bench::peak_flops_per_second(seconds);
+}
+int kernel_simd_width() {
+  return std::string(force_kernel().isa) == "avx2" ? 4 : kSimdWidth;
 }
 
 void Kernel(benchmark::State& state) {
@@ -95,7 +113,7 @@ void Kernel(benchmark::State& state) {
   const auto stream_doubles = static_cast<std::size_t>(c.bytes / 24.0);
   const double bandwidth = bench::triad_bytes_per_second(stream_doubles, kCeilingSeconds);
   const double gathers = bench::gather_loads_per_second(1024, kCeilingSeconds);
-  const double peak = bench::peak_flops_per_second(kCeilingSeconds);
+  const double peak = kernel_peak_flops(kCeilingSeconds);
   const auto t0 = std::chrono::steady_clock::now();
   for (auto _ : state) {
     add_internal_forces(model);
@@ -107,7 +125,7 @@ void Kernel(benchmark::State& state) {
   const double bytes_per_s = c.bytes / seconds, flops_per_s = c.flops / seconds;
   const double loads_per_s = c.loads / seconds;
   state.counters["gauss_points"] = c.gauss_points;
-  state.counters["padding"] = c.padded_entries / c.real_entries - 1.0;
+  state.counters["entries_per_gp"] = c.entries / c.gauss_points;
   state.counters["bytes_per_gp"] = c.bytes / c.gauss_points;
   state.counters["flops_per_gp"] = c.flops / c.gauss_points;
   state.counters["ns_per_gp"] = 1e9 * seconds / c.gauss_points;
@@ -118,7 +136,7 @@ void Kernel(benchmark::State& state) {
   state.counters["of_peak_flops"] = flops_per_s / (threads * peak);
   state.counters["of_gather"] = loads_per_s / (threads * gathers);
   state.counters["threads"] = threads;
-  state.counters["simd_width"] = kSimdWidth;
+  state.counters["simd_width"] = kernel_simd_width();
 }
 BENCHMARK(Kernel)
     ->ArgsProduct({{100, 1000}, {1, 2}})

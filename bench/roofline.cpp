@@ -113,4 +113,28 @@ double peak_flops_per_second(double seconds) {
   return 2.0 * chains * kSimdWidth * static_cast<double>(iterations) / since(t0);
 }
 
+// GCC's vector extension in a function compiled for AVX2 (xsimd's AVX2 batch exists only in code
+// compiled with -mavx2); the chains stay in this function, in registers.
+__attribute__((target("avx2"))) double peak_avx2_flops_per_second(double seconds) {
+  typedef double Quad __attribute__((vector_size(32)));
+  constexpr int chains = 12;
+  Quad x[chains];
+  for (int c = 0; c < chains; ++c)
+    x[c] = Quad{} + (1.0 + 1e-3 * c);
+  const Quad a = Quad{} + 0.999999, b = Quad{} + 1e-6;
+  std::size_t iterations = 0;
+  const auto t0 = Clock::now();
+  do {
+    for (int k = 0; k < 1024; ++k)
+      for (auto& v : x)
+        v = v * a + b;
+    iterations += 1024;
+  } while (since(t0) < seconds);
+  double sum = 0.0;
+  for (const auto& v : x)
+    sum += v[0] + v[1] + v[2] + v[3];
+  keep(sum);
+  return 2.0 * chains * 4 * static_cast<double>(iterations) / since(t0);
+}
+
 }  // namespace sg::bench

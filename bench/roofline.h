@@ -18,5 +18,8 @@ double chase_seconds_per_load(std::size_t n, double seconds);
 // Independent chains of x = x * a + b on DoubleBatch (a multiply and an add, not fused):
 // floating-point operations per second.
 double peak_flops_per_second(double seconds);
+// The same with 4 doubles per operation on AVX2 (the force kernel's AVX2 version,
+// model/force_kernel.h); call it only where the processor has AVX2.
+double peak_avx2_flops_per_second(double seconds);
 
 }  // namespace sg::bench

@@ -13,6 +13,7 @@
 #include "material/simd.h"
 
 namespace sg {
+inline namespace SG_SIMD_ISA {
 
 // A 2x2 tensor per lane: xx = (0,0), xy = (0,1), yx = (1,0), yy = (1,1).
 struct Tensor2B {
@@ -38,17 +39,18 @@ inline DoubleBatch log_of_lanes(const DoubleBatch& x, std::index_sequence<I...>)
 
 }  // namespace batch_detail
 
-// ln x lane by lane. On 128-bit batches (baseline x86-64: SSE2) std::log of each lane: xsimd's
-// vector log needs 64-bit integer vector operations that SSE2 lacks, and measured slower than
-// two calls of glibc's (5.3-7.4 against 4.3-5.5 ns per value, g++ 12 -O3); it also keeps the
-// default build's bits those of the scalar law. On wider batches (AVX2, AVX-512: a
-// SOFTGRAIN_NATIVE build) xsimd's vector log, 0.93 against 2.8 ns per value at W = 8, within an
-// ulp or two of std::log but not always the same bits (it fuses multiply-adds where it can).
+// ln x lane by lane: std::log of each lane, except in a SOFTGRAIN_NATIVE build (-march=native)
+// on batches wider than 2, which uses xsimd's vector log. std::log keeps the bits of the scalar
+// law, and the same bits whichever instruction set the kernel was compiled for (the default
+// build's SSE2 kernel and its AVX2 one, model/force_kernel.h); on SSE2 it is also the faster
+// (xsimd's log needs 64-bit integer vector operations that SSE2 lacks: 5.3-7.4 against
+// 4.3-5.5 ns per value, g++ 12 -O3). xsimd's vector log at W = 8 takes 0.93 against 2.8 ns per
+// value, within an ulp or two of std::log but not always the same bits (it fuses multiply-adds).
 inline DoubleBatch batch_log(const DoubleBatch& x) {
-  if constexpr (kSimdWidth <= 2)
-    return batch_detail::log_of_lanes(x, std::make_index_sequence<kSimdWidth>());
-  else
-    return xsimd::log(x);
+#if defined(SOFTGRAIN_NATIVE_BUILD)
+  if constexpr (kSimdWidth > 2) return xsimd::log(x);
+#endif
+  return batch_detail::log_of_lanes(x, std::make_index_sequence<kSimdWidth>());
 }
 
 namespace batch_detail {
@@ -157,4 +159,5 @@ inline Tensor2B viscous_second_piola(const MaterialParams& m, const Tensor2B& st
           DoubleBatch(0.0)};
 }
 
+}  // namespace SG_SIMD_ISA
 }  // namespace sg

@@ -7,18 +7,10 @@
 // The kernel streams through the precomputed rows; no allocation, no branches on strings.
 #include <vector>
 
+#include "model/force_kernel.h"
 #include "model/model.h"
 
 namespace sg {
-
-// What a body's force evaluation measured. A Gauss point with det F <= 0 or a non-finite
-// value stops the evaluation of that body and is reported (the caller adds the step).
-struct BodyForceResult {
-  double elastic_energy = 0.0;  // integral of W over the body
-  double damping_power = 0.0;   // integral of S_v : E_dot (>= 0)
-  int bad_gauss_point = -1;     // global index of the first invalid Gauss point, or -1
-  double bad_jacobian = 0.0;    // det F there
-};
 
 // Adds the internal forces of `body` into fx, fy. Arrays point at the body's first node
 // (local numbering of the rows). With `with_damping` false the viscous stress is skipped.

@@ -79,9 +79,6 @@ BodyId Model::add_deformable_body(const std::string& name, const BodyDiscretizat
       mean_gradient_x[j] += d.gauss_weight[g] / area * d.gauss_rows.dndx[e];
       mean_gradient_y[j] += d.gauss_weight[g] / area * d.gauss_rows.dndy[e];
     }
-  body.block_begin = static_cast<int>(gauss_blocks.blocks());
-  gauss_blocks.append_body(d.gauss_rows, d.gauss_weight, body.gauss_begin);
-  body.block_end = static_cast<int>(gauss_blocks.blocks());
   gauss_rows.append(d.gauss_rows);
   gauss_weight.insert(gauss_weight.end(), d.gauss_weight.begin(), d.gauss_weight.end());
   node_rows.append(d.node_rows);
@@ -172,7 +169,6 @@ BodyId Model::append_rigid(Body body, const std::string& name, const Polygon& po
   body.material = material;
   body.node_begin = body.node_end = body.boundary_end = static_cast<int>(nodes.size());
   body.gauss_begin = body.gauss_end = static_cast<int>(gauss_weight.size());
-  body.block_begin = body.block_end = static_cast<int>(gauss_blocks.blocks());
   body.triangle_begin = body.triangle_end = static_cast<int>(triangles.size());
   body.contour_begin = static_cast<int>(contour_body.size());
   body.contour_end = body.contour_begin + static_cast<int>(points.size());

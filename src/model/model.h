@@ -7,8 +7,6 @@
 //               contiguous range [node_begin, node_end) whose first nodes are its contour.
 //   gauss_rows  streamed: per Gauss point, the MLS row (local node index, N, dN/dX, dN/dY);
 //               body b owns Gauss points [gauss_begin, gauss_end).
-//   gauss_blocks the same gradients and weights in SIMD blocks (model/gauss_blocks.h), what
-//               the force kernel reads; body b owns blocks [block_begin, block_end).
 //
 // Node indices inside rows are local to their body, so a body's kernel works on pointers
 // to its own slice of the node arrays (and the same kernel runs on scratch copies, e.g. in
@@ -30,7 +28,6 @@
 #include "meshfree/body_discretization.h"
 #include "meshfree/periodic_strip.h"
 #include "meshfree/shape_rows.h"
-#include "model/gauss_blocks.h"
 
 namespace sg {
 
@@ -46,7 +43,6 @@ struct Body {
   int node_begin = 0, node_end = 0;  // global node range (deformable; empty for rigid)
   int boundary_end = 0;              // [node_begin, boundary_end): contour nodes, CCW
   int gauss_begin = 0, gauss_end = 0;
-  int block_begin = 0, block_end = 0;  // its Gauss points' blocks in Model::gauss_blocks
   int triangle_begin = 0, triangle_end = 0;
   // Contour points of every body, concatenated (Model::contour_*): for a deformable body,
   // contour point k is boundary node node_begin + (k - contour_begin); for a rigid body the
@@ -167,7 +163,6 @@ struct Model {
   NodeState nodes;
   ShapeRows gauss_rows;                       // local node numbering per body
   std::vector<double> gauss_weight;           // reference area of each Gauss point
-  GaussBlocks gauss_blocks;                   // the same rows and weights, blocked (kernel)
   ShapeRows node_rows;                        // row of each node at its own reference position
   std::vector<std::array<int, 3>> triangles;  // global node numbering
   // Contour points of all bodies (see Body::contour_begin). For rigid bodies: the offset of

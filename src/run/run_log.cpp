@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "io/atomic_file.h"
+#include "model/force_kernel.h"
 
 namespace sg {
 
@@ -13,10 +14,11 @@ namespace {
 
 void write_parameters(std::ostream& out, const ScenarioDef& s) {
   out << "softgrain run log\nscenario = " << s.source.string() << "\nname = " << s.name
-      << "\nthreads = " << omp_get_max_threads() << "\n\n[time]\nduration = " << s.duration
-      << "\nsafety = " << s.time_step_safety << "\nfixed_step = " << s.fixed_time_step
-      << "\nmass_scaling_step = " << s.mass_scaling_step << "\nintegrator = \""
-      << (s.implicit_viscosity ? "imex" : "explicit") << "\"\nimex_tolerance = " << s.imex_tolerance
+      << "\nthreads = " << omp_get_max_threads() << "\nforce_kernel = \"" << force_kernel().isa
+      << "\"\n\n[time]\nduration = " << s.duration << "\nsafety = " << s.time_step_safety
+      << "\nfixed_step = " << s.fixed_time_step << "\nmass_scaling_step = " << s.mass_scaling_step
+      << "\nintegrator = \"" << (s.implicit_viscosity ? "imex" : "explicit")
+      << "\"\nimex_tolerance = " << s.imex_tolerance
       << "\nimex_refactor_threshold = " << s.imex_refactor_threshold
       << "\n\n[output]\nseries_period = " << s.series_period
       << "\nfield_period = " << s.field_period << "\ncheckpoint_period = " << s.checkpoint_period
