@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "command_registry.h"
+#include "model/force_kernel.h"
 #include "scenario/scenario.h"
 #include "solver/explicit_solver.h"
 #include "solver/mass_scaling.h"
@@ -105,6 +106,8 @@ int info(const std::string& file) {
               << scenario.duration << " time units\n";
   if (!mass_scaling.empty()) std::cout << "  " << mass_scaling << "\n";
   std::cout << "  memory:        " << bytes / 1048576.0 << " MiB (node state and shape rows)\n";
+  std::cout << "  force kernel:  " << force_kernel().isa
+            << " (SOFTGRAIN_SIMD=default selects the baseline one)\n";
   if (stable.limiting_body >= 0 && has_damped_deformable_body(model))
     print_integrators(model, contacts.get(), scenario, contact_stiffness);
   return 0;

@@ -4,11 +4,12 @@
 //
 // The default build targets baseline x86-64 (SSE2), what every x86-64 processor runs. On
 // x86-64 it compiles the kernel a second time for AVX2 (force_kernel_avx2.cpp) and uses that
-// version where the processor has AVX2: 1.6x the step rate of the SSE2 one on the benchmark's
-// discs (bench/results). Both versions give the same bits: the kernel's sums do not depend on
-// the SIMD width (row_kernel.h), no multiply-add is fused (-ffp-contract=off, and AVX2 without
-// FMA), and ln J is std::log per lane in both (material/material_batch.h). A SOFTGRAIN_NATIVE
-// build (-march=native) has one version, for the build machine.
+// version where the processor has AVX2: 1.5x the step rate of the SSE2 one on the benchmark's
+// discs, one thread (bench/results/*/internal_forces.csv, set D). Both versions give the same bits:
+// the kernel's sums do not depend on the SIMD width (row_kernel.h), no multiply-add is fused
+// (-ffp-contract=off, and AVX2 without FMA), and ln J is std::log per lane in both
+// (material/material_batch.h). A SOFTGRAIN_NATIVE build (-march=native) has one version, for the
+// build machine.
 //
 // SOFTGRAIN_SIMD=default (or =avx2) in the environment asks for one version; `softgrain info`
 // prints the one in use.

@@ -12,7 +12,8 @@ namespace sg {
 BodyForceResult add_body_internal_forces(const Model& model, BodyId body_id, const double* ux,
                                          const double* uy, const double* vx, const double* vy,
                                          double* fx, double* fy, bool with_damping,
-                                         double* viscous_fx, double* viscous_fy) {
+                                         double* viscous_fx, double* viscous_fy,
+                                         const ForceKernel* kernel) {
   const Body& body = model.bodies[static_cast<std::size_t>(body_id)];
   const MaterialParams& material = model.materials[static_cast<std::size_t>(body.material)];
   const bool damped = with_damping && material.damping > 0.0;
@@ -31,7 +32,7 @@ BodyForceResult add_body_internal_forces(const Model& model, BodyId body_id, con
                           fy,
                           split_viscous ? viscous_fx : nullptr,
                           split_viscous ? viscous_fy : nullptr};
-  return force_kernel().body_forces(model, body, arrays, damped, rotation);
+  return (kernel ? *kernel : force_kernel()).body_forces(model, body, arrays, damped, rotation);
 }
 
 void body_deformation_gradients(const Model& model, BodyId body_id, const double* ux,

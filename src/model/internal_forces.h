@@ -15,11 +15,12 @@ namespace sg {
 // Adds the internal forces of `body` into fx, fy. Arrays point at the body's first node
 // (local numbering of the rows). With `with_damping` false the viscous stress is skipped.
 // When `viscous_fx`/`viscous_fy` are given, they receive (are set to) the viscous part alone.
+// `kernel`: the version of the force kernel to run (force_kernel.h; null: force_kernel()).
 BodyForceResult add_body_internal_forces(const Model& model, BodyId body, const double* ux,
                                          const double* uy, const double* vx, const double* vy,
                                          double* fx, double* fy, bool with_damping = true,
-                                         double* viscous_fx = nullptr,
-                                         double* viscous_fy = nullptr);
+                                         double* viscous_fx = nullptr, double* viscous_fy = nullptr,
+                                         const ForceKernel* kernel = nullptr);
 
 // The viscous operator of a deformable body at a fixed deformation: out = C x, where the
 // viscous force of the body under the velocity parameters x is f_v = -C x (C symmetric

@@ -1,5 +1,5 @@
 #pragma once
-// The pieces of the force kernel (internal_forces.cpp). A body's node fields are copied side by
+// The pieces of the force kernel (force_kernel_impl.h). A body's node fields are copied side by
 // side into a small per-thread buffer (node j's K fields at K j: ux, uy, vx, vy for the forces),
 // so that one row entry reads all the fields of its node in one vector load and adds its
 // force terms to all of them in one vector read-modify-write: the vectors run across the fields

@@ -33,9 +33,9 @@ constexpr bool kEigenFuses = true;
 constexpr bool kEigenFuses = false;
 #endif
 
-// Discs of three sizes (radii 0.5, 0.37, 0.23 at h = 0.1; GaussBlocks.* checks that one has a
-// number of Gauss points that is not a multiple of W),
-// displaced and moving at random (strains of a few percent).
+// Discs of three sizes (radii 0.5, 0.37, 0.23 at h = 0.1; a test below checks that one has a
+// number of Gauss points that is not a multiple of W), displaced and moving at random (strains
+// of a few percent).
 Model random_discs(const MaterialDef& material, unsigned seed) {
   Model model;
   const MaterialId m = model.add_material(material);
@@ -112,15 +112,8 @@ struct Forces {
 BodyForceResult with_kernel(const ForceKernel& kernel, const Model& model, BodyId b,
                             const double* ux, const double* uy, const double* vx, const double* vy,
                             double* fx, double* fy, bool with_damping, double* vfx, double* vfy) {
-  const Body& body = model.bodies[static_cast<std::size_t>(b)];
-  const MaterialParams& m = model.materials[static_cast<std::size_t>(body.material)];
-  const bool damped = with_damping && m.damping > 0.0;
-  const Mat2 rotation = damped && m.damping_model == DampingModel::corotational
-                            ? body_rotation(model, body, ux, uy).matrix()
-                            : Mat2::Identity();
-  std::fill(vfx, vfx + body.node_count(), 0.0);
-  std::fill(vfy, vfy + body.node_count(), 0.0);
-  return kernel.body_forces(model, body, {ux, uy, vx, vy, fx, fy, vfx, vfy}, damped, rotation);
+  return add_body_internal_forces(model, b, ux, uy, vx, vy, fx, fy, with_damping, vfx, vfy,
+                                  &kernel);
 }
 
 // One kernel (a version of ours, or the reference) over every body of the model.
