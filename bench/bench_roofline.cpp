@@ -145,7 +145,7 @@ BENCHMARK(Kernel)
     ->UseRealTime()
     ->MinTime(1.0);
 
-// The scalar kernel the blocked one replaced (tests/scenes/reference_kernel.h), driven as
+// The scalar kernel the SIMD kernels replaced (tests/scenes/reference_kernel.h), driven as
 // add_internal_forces drives it: the baseline of the kernel's speed-up.
 void KernelScalarReference(benchmark::State& state) {
   omp_set_num_threads(static_cast<int>(state.range(1)));
