@@ -9,14 +9,21 @@
 namespace sg {
 
 std::string format_duration(double seconds) {
+  // An ETA can be infinite or absurdly long when the step collapses: those would overflow the
+  // integer conversions below, so they are named instead.
+  constexpr double kDay = 86400.0, kLongest = 10000.0 * kDay;
+  if (!std::isfinite(seconds) || seconds < 0.0) return "unknown";
+  if (seconds >= kLongest) return "over 10000 days";
+  const auto whole = [](double v) { return static_cast<long long>(v); };
   std::ostringstream s;
   if (seconds < 60)
     s << std::fixed << std::setprecision(0) << seconds << "s";
   else if (seconds < 3600)
-    s << static_cast<int>(seconds / 60) << "m" << static_cast<int>(std::fmod(seconds, 60)) << "s";
+    s << whole(seconds / 60) << "m" << whole(std::fmod(seconds, 60)) << "s";
+  else if (seconds < kDay)
+    s << whole(seconds / 3600) << "h" << whole(std::fmod(seconds, 3600) / 60) << "m";
   else
-    s << static_cast<int>(seconds / 3600) << "h" << static_cast<int>(std::fmod(seconds, 3600) / 60)
-      << "m";
+    s << whole(seconds / kDay) << "d" << whole(std::fmod(seconds, kDay) / 3600) << "h";
   return s.str();
 }
 

@@ -26,7 +26,8 @@ class ProgressOutput : public RunObserver {
   double first_time_ = 0.0;
 };
 
-// "12s", "3m4s", "2h5m".
+// "12s", "3m4s", "2h5m", "19d2h"; "unknown" for a negative or non-finite duration, "over 10000
+// days" beyond.
 std::string format_duration(double seconds);
 
 // One line: each phase's share of the profile's total, largest first ("internal forces 71%,
