@@ -78,7 +78,21 @@ struct Extent {
   Vec2 lo, hi;
   double widest = 0.0;
 };
+
+// Every position finite (else the grid, and cwiseMin which may pass over a NaN, mean nothing).
+void check_finite(const BroadPhaseInput& input) {
+  for (std::size_t i = 0; i < input.nodes.size(); ++i)
+    SG_VERIFY(input.nodes[i].allFinite(), "contact broad phase: node "
+                                              << i << " (body " << input.node_body[i]
+                                              << ") has a non-finite position");
+  for (std::size_t s = 0; s < input.segment_start.size(); ++s)
+    SG_VERIFY(input.segment_start[s].allFinite() && input.segment_end[s].allFinite(),
+              "contact broad phase: segment " << s << " (body " << input.segment_body[s]
+                                              << ") has a non-finite end point");
+}
+
 Extent extent_of(const BroadPhaseInput& input) {
+  check_finite(input);
   Extent e{input.nodes[0], input.nodes[0], 0.0};
   for (const Vec2& p : input.nodes) {
     e.lo = e.lo.cwiseMin(p);
@@ -90,8 +104,6 @@ Extent extent_of(const BroadPhaseInput& input) {
     e.hi = e.hi.cwiseMax(a).cwiseMax(b);
     e.widest = std::max(e.widest, std::abs(b.x() - a.x()));
   }
-  SG_VERIFY(e.lo.allFinite() && e.hi.allFinite(),
-            "contact broad phase: a node or segment position is not finite");
   return e;
 }
 

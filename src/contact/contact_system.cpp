@@ -91,6 +91,7 @@ double ContactSystem::effective_mass(BodyId a, BodyId b) const {
 
 void ContactSystem::update_geometry(const Model& model) {
   compute_contour_positions(model, positions_, &rotations_);
+  check_finite_positions(model);
   if (previous_positions_.size() != positions_.size()) previous_positions_ = positions_;
   const std::size_t n = positions_.size();
   segment_start_.resize(n);
@@ -111,6 +112,17 @@ void ContactSystem::update_geometry(const Model& model) {
     tributary_lengths(view, std::span<double>(tributary_.data() + body.contour_begin,
                                               static_cast<std::size_t>(body.contour_count())));
   }
+}
+
+void ContactSystem::check_finite_positions(const Model& model) const {
+  for (const Body& body : model.bodies)
+    for (int k = body.contour_begin; k < body.contour_end; ++k) {
+      const Vec2& p = positions_[static_cast<std::size_t>(k)];
+      if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
+        SG_THROW("body '" << body.name << "', contour point " << k - body.contour_begin
+                          << ": position (" << p.x() << ", " << p.y()
+                          << ") is not finite: the step exploded or the input is inconsistent");
+    }
 }
 
 ContactStepResult ContactSystem::add_contact_forces(Model& model, double time_step) {

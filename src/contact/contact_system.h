@@ -160,6 +160,8 @@ class ContactSystem {
 
   // The phases of add_contact_forces, in order.
   void update_geometry(const Model& model);
+  // Throws sg::Error naming the body and contour point of the first non-finite position.
+  void check_finite_positions(const Model& model) const;
   void group_candidates(std::span<const ContactCandidate> candidates);
   // Narrow phase and law of one group (parallel over groups: writes only its own slots).
   void evaluate_group(const Model& model, std::span<const ContactCandidate> candidates,

@@ -87,7 +87,12 @@ void ExplicitSolver::apply_external_forces() {
 
 ContactStepResult ExplicitSolver::compute_contact_forces(double dt_prev) {
   // The step that led to u_n: contact damping turns the slip and gap increments into rates.
-  return contacts_ ? contacts_->add_contact_forces(model_, dt_prev) : ContactStepResult{};
+  if (!contacts_) return {};
+  try {
+    return contacts_->add_contact_forces(model_, dt_prev);
+  } catch (const Error& e) {
+    SG_THROW(e.what() << " at step " << state_.step << ", time " << state_.time);
+  }
 }
 
 InternalForceResult ExplicitSolver::compute_internal_forces() {

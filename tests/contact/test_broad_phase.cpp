@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -297,6 +298,32 @@ TEST(BroadPhase, BadParametersAreClearErrors) {
               broad.build({nodes, no_owner, starts, ends, segment_body});
             }).find("node owners"),
             std::string::npos);
+}
+
+// A NaN must not slip through the bounding box (Eigen's cwiseMin may pass over it): the error
+// names the node or segment and its body.
+TEST(BroadPhase, NonFinitePositionNamesTheNodeOrSegment) {
+  BroadPhaseParams params;
+  params.cutoff = 0.1;
+  params.skin = 0.1;
+  std::vector<Vec2> nodes = {Vec2(0, 0), Vec2(1, 0), Vec2(2, 0)};
+  std::vector<Vec2> starts = {Vec2(0, 1), Vec2(1, 1)}, ends = {Vec2(1, 1), Vec2(2, 1)};
+  const std::vector<int> node_body = {0, 0, 1}, segment_body = {2, 3};
+  BroadPhase broad(params);
+  const auto build_error = [&] {
+    return error_of([&] { broad.build({nodes, node_body, starts, ends, segment_body}); });
+  };
+  EXPECT_EQ(build_error(), "");
+  // Not first (the box starts from node 0): a NaN met later by cwiseMin.
+  nodes[2] = Vec2(std::nan(""), 0.0);
+  const std::string node_error = build_error();
+  EXPECT_NE(node_error.find("node 2 (body 1) has a non-finite position"), std::string::npos)
+      << node_error;
+  nodes[2] = Vec2(2, 0);
+  ends[1] = Vec2(2.0, std::numeric_limits<double>::infinity());
+  const std::string segment_error = build_error();
+  EXPECT_NE(segment_error.find("segment 1 (body 3) has a non-finite end point"), std::string::npos)
+      << segment_error;
 }
 
 }  // namespace

@@ -225,6 +225,29 @@ TEST(Periodicity, BlockOnAStripsClosingSegmentFeelsWhatItFeelsElsewhere) {
   EXPECT_NEAR(seam[2], -0.001, 1e-9);  // no contact deeper than the real penetration
 }
 
+// A position that has become non-finite (here a rigid body's, set by hand) stops the step with
+// the body, the contour point and the step named.
+TEST(BadInput, NonFinitePositionNamesBodyPointAndStep) {
+  const double h = 0.01;
+  BlockOnPlane s = block_on_plane(h, 1e-3);
+  ContactSettings settings;
+  settings.cutoff = 0.5 * h;
+  ContactSystem contacts(s.model, scenes::single_law(s.model, coulomb(0.3)), settings);
+  ExplicitSolver solver(s.model, &contacts);
+  const double dt = estimate_stable_time_step(s.model, 0.5, 1e4).dt;
+  solver.step(dt);
+  solver.step(dt);
+  s.model.rigid.y[1] = std::nan("");
+  try {
+    solver.step(dt);
+    FAIL() << "a NaN position was accepted";
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    for (const char* part : {"body 'block', contour point 0", "is not finite", "at step 2"})
+      EXPECT_NE(what.find(part), std::string::npos) << "missing '" << part << "' in: " << what;
+  }
+}
+
 TEST(BadInput, MaterialPairWithoutLawIsRefused) {
   Model model;
   model.add_material(scenes::rigid_material("steel"));
