@@ -118,7 +118,7 @@ void ContactSystem::check_finite_positions(const Model& model) const {
   for (const Body& body : model.bodies)
     for (int k = body.contour_begin; k < body.contour_end; ++k) {
       const Vec2& p = positions_[static_cast<std::size_t>(k)];
-      if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
+      if (!p.allFinite())
         SG_THROW("body '" << body.name << "', contour point " << k - body.contour_begin
                           << ": position (" << p.x() << ", " << p.y()
                           << ") is not finite: the step exploded or the input is inconsistent");
