@@ -2,13 +2,13 @@
 
 #include <algorithm>
 
-#include "analysis/csv_table.h"
+#include "analysis/run_csv_table.h"
 #include "core/error.h"
 
 namespace sg {
 
 GrainSnapshot read_grain_snapshot(const std::string& path, double time) {
-  const CsvTable table = read_csv_table(path);
+  const RunCsvTable table = read_run_csv_table(path);
   const int c_body = table.column_index("body");
   const int c_x = table.column_index("x");
   const int c_y = table.column_index("y");

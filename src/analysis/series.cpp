@@ -2,7 +2,7 @@
 
 #include <array>
 
-#include "analysis/csv_table.h"
+#include "analysis/run_csv_table.h"
 #include "core/error.h"
 
 namespace sg {
@@ -59,7 +59,7 @@ void check_series(const Series& series) {
 }
 
 Series read_series(const std::string& path) {
-  const CsvTable table = read_csv_table(path);
+  const RunCsvTable table = read_run_csv_table(path);
   Series series;
   series.path = path;
   series.columns = table.columns;

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "analysis/compaction_curve.h"
-#include "analysis/csv_table.h"
+#include "analysis/run_csv_table.h"
 #include "core/error.h"
 #include "synthetic.h"
 
@@ -128,7 +128,7 @@ TEST(CompactionCurve, CsvHoldsOneRowPerSeriesRowAtFullPrecision) {
   const Series s = box_series(times(11, 0.5));
   const CompactionCurve c = compute_compaction_curve(s, box_geometry(), {}, 12.0, "constant");
   write_compaction_csv(dir.file("compaction.csv"), c);
-  const CsvTable t = read_csv_table(dir.file("compaction.csv"));
+  const RunCsvTable t = read_run_csv_table(dir.file("compaction.csv"));
   const std::vector<std::string> header{"time",       "lid_height",     "lid_force", "lid_stress",
                                         "grain_area", "solid_fraction", "snapshot"};
   EXPECT_EQ(t.columns, header);

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "analysis/csv_table.h"
+#include "analysis/run_csv_table.h"
 #include "analysis/grain_snapshot.h"
 #include "analysis/series.h"
 #include "render/plot_runner.h"
@@ -166,7 +166,7 @@ TEST(CompactionAnalyze, CurveMatchesGenerateAndTheBuilderAndGrowsAsTheLidDescend
   EXPECT_GT(last.solid_fraction, first.solid_fraction + 0.15);
 
   // The files: compaction.csv row for row, and the scalars in summary.json.
-  const CsvTable csv = read_csv_table(r.compaction_path.string());
+  const RunCsvTable csv = read_run_csv_table(r.compaction_path.string());
   ASSERT_EQ(csv.rows.size(), c.points.size());
   const int phi = csv.column_index("solid_fraction");
   EXPECT_NEAR(csv.number(csv.rows.size() - 1, phi), last.solid_fraction, 1e-11);

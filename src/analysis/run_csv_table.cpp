@@ -1,4 +1,4 @@
-#include "analysis/csv_table.h"
+#include "analysis/run_csv_table.h"
 
 #include <charconv>
 #include <cmath>
@@ -32,19 +32,19 @@ std::vector<std::string> split_fields(std::string_view line) {
 
 }  // namespace
 
-int CsvTable::column_index(std::string_view name) const {
+int RunCsvTable::column_index(std::string_view name) const {
   for (std::size_t c = 0; c < columns.size(); ++c)
     if (columns[c] == name) return static_cast<int>(c);
   SG_THROW(path << ": missing column '" << name << "'");
 }
 
-bool CsvTable::has_column(std::string_view name) const {
+bool RunCsvTable::has_column(std::string_view name) const {
   for (const auto& c : columns)
     if (c == name) return true;
   return false;
 }
 
-double CsvTable::number(std::size_t row, int column) const {
+double RunCsvTable::number(std::size_t row, int column) const {
   const std::string& text = rows[row][static_cast<std::size_t>(column)];
   double value = 0.0;
   const char* begin = text.data();
@@ -63,10 +63,10 @@ double CsvTable::number(std::size_t row, int column) const {
   return value;
 }
 
-CsvTable read_csv_table(const std::string& path) {
+RunCsvTable read_run_csv_table(const std::string& path) {
   std::ifstream in(path);
   SG_VERIFY(in, path << ": cannot open for reading");
-  CsvTable table;
+  RunCsvTable table;
   table.path = path;
   std::string line;
   int line_number = 0;

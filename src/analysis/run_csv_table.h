@@ -1,5 +1,7 @@
 #pragma once
-// A small CSV reader shared by the run-folder readers (series.csv, grain snapshots).
+// A small CSV reader shared by the run-folder readers (series.csv, grain snapshots). Its name
+// differs from the scenario reader's (scenario/csv_table.h, sg::CsvTable) on purpose: two classes
+// of one qualified name break the one-definition rule (the CI's -Wodr link checks for it).
 //
 // The engine writes plain numeric CSV: one header row of column names, then rows of
 // comma-separated fields. Lines starting with '#' are comments (room for a format-version
@@ -11,7 +13,7 @@
 
 namespace sg {
 
-struct CsvTable {
+struct RunCsvTable {
   std::string path;                            // for error messages
   std::vector<std::string> columns;            // header, in file order
   std::vector<std::vector<std::string>> rows;  // fields, as text
@@ -28,6 +30,6 @@ struct CsvTable {
 
 // Reads the whole file. Throws sg::Error if it cannot be opened, has no header, has a
 // duplicated or empty column name, or a row whose field count differs from the header.
-CsvTable read_csv_table(const std::string& path);
+RunCsvTable read_run_csv_table(const std::string& path);
 
 }  // namespace sg
