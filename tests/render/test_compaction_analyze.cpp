@@ -9,8 +9,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "analysis/run_csv_table.h"
 #include "analysis/grain_snapshot.h"
+#include "analysis/run_csv_table.h"
 #include "analysis/series.h"
 #include "render/plot_runner.h"
 #include "render/snapshot_renderer.h"
