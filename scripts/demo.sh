@@ -3,6 +3,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+source scripts/build-env.sh
+# shellcheck disable=SC2046 # generator_args prints one word or nothing
+cmake -S . -B build $(generator_args build) "${cmake_configure_args[@]}" -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)" --target softgrain
 ./build/app/softgrain run examples/shear-cell-small.toml

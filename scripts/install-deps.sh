@@ -2,6 +2,8 @@
 # Installs the Debian packages softgrain needs, only those missing.
 # Works as root or through sudo. Each package is here for one reason:
 #   cmake, g++          build (C++20, OpenMP comes with g++)
+#   ccache, ninja-build a compiler cache shared between clones, and a faster build tool
+#                       (scripts/build-env.sh; CI's time: docs/architecture.md)
 #   libeigen3-dev       small dense algebra (2x2 tensors, 3x3 MLS moment matrices, eigen solves in tests)
 #   libcgal-dev         constrained Delaunay triangulation + mesher of grain domains (meshfree/)
 #   libxsimd-dev        SIMD batches and vector log of the force kernel (material/simd.h), header-only
@@ -14,7 +16,7 @@
 #   python3-scipy       campaign maps (scattered-data interpolation) and correlations
 #   ffmpeg              the MP4 movies `softgrain render` makes (ffprobe checks them in tests)
 set -euo pipefail
-packages=(cmake g++ make libeigen3-dev libcgal-dev libxsimd-dev libtomlplusplus-dev libcli11-dev
+packages=(cmake g++ make ccache ninja-build libeigen3-dev libcgal-dev libxsimd-dev libtomlplusplus-dev libcli11-dev
           libgtest-dev libbenchmark-dev libcairo2-dev nlohmann-json3-dev python3-matplotlib python3-numpy
           python3-scipy ffmpeg)
 missing=()

@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# Bitwise comparison of two softgrain executables on five scenarios: the check that a
+# restructuring kept results identical (docs/architecture.md, "Developing softgrain").
+#
+#   bash scripts/compare-runs.sh OLD_SOFTGRAIN NEW_SOFTGRAIN [DURATION|full] [THREADS]
+#
+# Runs examples/shear-cell-small.toml, shear-cell-explicit.toml, compaction-box.toml,
+# shear-cell-deformable-pressure.toml and bench/scenes/imex-cell.toml with `[time]
+# integrator = "imex"`, each shortened to DURATION time units (default 2; `full`: as written),
+# with both executables, and compares every file they write (series.csv, fields/, contacts/,
+# grains/, checkpoint.bin, the .pvd indexes) byte for byte. run.log is left out: it records
+# wall-clock times. Prints one line per scenario and exits 1 if any file differs.
+# Build the old executable from a checkout of the old commit, e.g.
+#   git worktree add /tmp/old <commit> && cmake -S /tmp/old -B /tmp/old/build && \
+#   cmake --build /tmp/old/build --target softgrain
+set -euo pipefail
+if [[ $# -lt 2 ]]; then
+  sed -n '2,14p' "$0" >&2
+  exit 2
+fi
+old=$(realpath "$1")
+new=$(realpath "$2")
+duration=${3:-2}
+threads=${4:-2}
+repo=$(cd "$(dirname "$0")/.." && pwd)
+work=$(mktemp -d "${TMPDIR:-/tmp}/softgrain-compare.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+
+scenarios=(examples/shear-cell-small.toml examples/shear-cell-explicit.toml
+           examples/compaction-box.toml examples/shear-cell-deformable-pressure.toml
+           bench/scenes/imex-cell.toml)
+mkdir -p "$work/scenarios"
+cp "$repo"/examples/*.csv "$work/scenarios/"
+for s in "${scenarios[@]}"; do
+  copy="$work/scenarios/$(basename "$s")"
+  cp "$repo/$s" "$copy"
+  if [[ "$duration" != full ]]; then
+    sed -i "0,/^duration *=.*/s//duration = $duration/" "$copy"
+  fi
+done
+sed -i 's/^integrator *=.*/integrator = "imex"/' "$work/scenarios/imex-cell.toml"
+
+status=0
+for s in "${scenarios[@]}"; do
+  name=$(basename "$s" .toml)
+  for side in old new; do
+    exe=$old
+    [[ $side == new ]] && exe=$new
+    if ! "$exe" run "$work/scenarios/$name.toml" --threads "$threads" -o "$work/$side/$name" \
+        > "$work/$side-$name.out" 2>&1; then
+      echo "$name: the $side executable failed:"
+      tail -5 "$work/$side-$name.out"
+      status=1
+      continue 2
+    fi
+  done
+  if differences=$(diff -rq --exclude=run.log "$work/old/$name" "$work/new/$name"); then
+    files=$(cd "$work/new/$name" && find . -type f ! -name run.log | wc -l)
+    echo "$name: identical ($files files)"
+  else
+    echo "$name: DIFFERENT"
+    echo "$differences" | head -20
+    status=1
+  fi
+done
+exit $status
