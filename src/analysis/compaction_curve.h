@@ -12,7 +12,7 @@
 //                                                 force/length, the stress of a 2D run)
 //   phi(t)   = A(t) / (W h(t))                    solid fraction: grain area over the box area
 //                                                 below the lid
-// Every column of a series.csv row describes the row's time t (io/run.cpp reads the positions
+// Every column of a series.csv row describes the row's time t (run/run.cpp reads the positions
 // before the step whose force evaluation the row reports), so h, sigma and phi are one instant.
 //
 // W is the inner width between the side walls. A(t) is the total grain area: from the grain

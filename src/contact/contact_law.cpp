@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "contact/contact_law_parts.h"
+#include "contact/law_coefficients.h"
 #include "core/error.h"
 
 namespace sg {
@@ -28,39 +29,25 @@ const char* contact_law_kind_name(ContactLawKind kind) {
 
 namespace {
 
-// The coefficients only some kinds use, with whether this law's kind uses each: one given to
-// another kind is refused (a sign that the scenario means another kind).
+// The coefficients only some kinds use (law_coefficients.h): one given to another kind is
+// refused (a sign that the scenario means another kind).
 void validate_kind_coefficients(const ContactLawParams& p, std::string_view context) {
   using K = ContactLawKind;
   const char* kind = contact_law_kind_name(p.kind);
   const bool bonded = p.kind == K::bonded, zone = p.kind == K::cohesive_zone;
-  struct Coefficient {
-    const char* name;
-    double value, unused_value;
-    bool used;
+  const auto check_coefficient = [&](const char* name, double value, double unused_value,
+                                     bool used) {
+    SG_VERIFY(std::isfinite(value), context << " (" << kind << "): " << name
+                                            << " must be a finite number, got " << value);
+    SG_VERIFY(used || value == unused_value, context << " (" << kind << "): " << name << " "
+                                                     << value << " given, which a " << kind
+                                                     << " law does not use");
+    SG_VERIFY(value >= 0.0,
+              context << " (" << kind << "): " << name << " must be >= 0, got " << value);
   };
-  const Coefficient coefficients[] = {
-      {"damping_ratio", p.damping_ratio, 0.0, true},
-      {"unloading_ratio", p.unloading_ratio, 1.0, p.kind == K::two_slope},
-      {"bond_normal_stiffness", p.bond_normal_stiffness, 0.0, bonded},
-      {"bond_tensile_strength", p.bond_tensile_strength, 0.0, bonded},
-      {"bond_shear_strength", p.bond_shear_strength, 0.0, bonded},
-      {"bond_friction", p.bond_friction, 0.0, bonded},
-      {"bond_gap", p.bond_gap, 0.0, bonded || zone},
-      {"peak_traction", p.peak_traction, 0.0, zone},
-      {"critical_opening", p.critical_opening, 0.0, zone},
-      {"residual_traction", p.residual_traction, 0.0, zone},
-      {"mixed_mode_ratio", p.mixed_mode_ratio, 1.0, zone},
-  };
-  for (const Coefficient& c : coefficients) {
-    SG_VERIFY(std::isfinite(c.value), context << " (" << kind << "): " << c.name
-                                              << " must be a finite number, got " << c.value);
-    SG_VERIFY(c.used || c.value == c.unused_value, context << " (" << kind << "): " << c.name << " "
-                                                           << c.value << " given, which a " << kind
-                                                           << " law does not use");
-    SG_VERIFY(c.value >= 0.0,
-              context << " (" << kind << "): " << c.name << " must be >= 0, got " << c.value);
-  }
+  check_coefficient("damping_ratio", p.damping_ratio, 0.0, true);
+  for (const LawCoefficient& c : law_coefficients())
+    check_coefficient(c.key, p.*c.member, c.unused_value, is_used_by(c, p.kind));
   const auto require = [&](bool ok, const char* name, double value, const char* expected) {
     SG_VERIFY(ok, context << " (" << kind << "): " << name << " " << expected << ", got " << value);
   };

@@ -60,7 +60,7 @@ CheckpointFingerprint fingerprint_of(const Model& model, std::span<const double>
 // One .pvd collection's entries: (time, file relative to the .pvd).
 using PvdEntries = std::vector<std::pair<double, std::string>>;
 
-// The run loop's own state (io/run.cpp), beside the solver's: what it has written and when
+// The run loop's own state (run/run.cpp), beside the solver's: what it has written and when
 // it writes next. A member added here must be added to describe() below, which reads and
 // writes it (and kCheckpointFormatVersion bumped).
 struct RunLoopState {

@@ -13,7 +13,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The first line of every run.log (io/run.cpp).
+// The first line of every run.log (run/run_log.cpp).
 constexpr std::string_view kRunLogHeader = "softgrain run log";
 
 // What softgrain commands write into a run folder (run, generate, render, analyze, sweep).

@@ -1,7 +1,6 @@
 #include "scenario/contact_law_def.h"
 
-#include <initializer_list>
-
+#include "contact/law_coefficients.h"
 #include "core/error.h"
 #include "scenario/toml_reader.h"
 
@@ -20,63 +19,49 @@ ContactLawKind read_kind(const TomlReader& t) {
   t.fail("law", "unknown law '" + law + "'");
 }
 
-// Keys that belong to some kinds only: given to another kind, they are a mistake.
+// Keys that belong to some kinds only (contact/law_coefficients.h): given to another kind,
+// they are a mistake.
 void reject_keys_of_other_kinds(const TomlReader& t, ContactLawKind kind) {
-  using K = ContactLawKind;
-  struct KeyKinds {
-    const char* key;
-    std::initializer_list<K> kinds;
-    const char* names;
-  };
-  const KeyKinds keys[] = {
-      {"unloading_ratio", {K::two_slope}, "\"two_slope\""},
-      {"bond_normal_stiffness", {K::bonded}, "\"bonded\""},
-      {"bond_tensile_strength", {K::bonded}, "\"bonded\""},
-      {"bond_shear_strength", {K::bonded}, "\"bonded\""},
-      {"bond_friction", {K::bonded}, "\"bonded\""},
-      {"bond_gap", {K::bonded, K::cohesive_zone}, "\"bonded\" or \"cohesive_zone\""},
-      {"peak_traction", {K::cohesive_zone}, "\"cohesive_zone\""},
-      {"critical_opening", {K::cohesive_zone}, "\"cohesive_zone\""},
-      {"residual_traction", {K::cohesive_zone}, "\"cohesive_zone\""},
-      {"mixed_mode_ratio", {K::cohesive_zone}, "\"cohesive_zone\""},
-      {"tangential_stiffness",
-       {K::coulomb, K::cohesive, K::two_slope, K::bonded},
-       "\"coulomb\", \"cohesive\", \"two_slope\" or \"bonded\" (cohesive_zone: normal_stiffness "
-       "both ways)"},
-  };
-  for (const KeyKinds& k : keys) {
-    if (!t.has(k.key)) continue;
-    bool used = false;
-    for (const K kind_using : k.kinds)
-      used = used || kind_using == kind;
-    if (!used && !(kind == K::frictionless && std::string(k.key) == "tangential_stiffness"))
-      t.fail(k.key, std::string("applies only to law = ") + k.names);
+  for (const LawCoefficient& c : law_coefficients())
+    if (t.has(c.key) && !is_used_by(c, kind))
+      t.fail(c.key, "applies only to law = " + names_of_laws_using(c));
+  // cohesive_zone has one stiffness both ways; a frictionless law ignores a tangential one.
+  if (t.has("tangential_stiffness") && kind == ContactLawKind::cohesive_zone)
+    t.fail("tangential_stiffness",
+           "applies only to law = \"coulomb\", \"cohesive\", \"two_slope\" or \"bonded\" "
+           "(cohesive_zone: normal_stiffness both ways)");
+}
+
+// The coefficients of law_coefficients.h that `kind` uses, with their bounds and fallbacks.
+void read_kind_coefficients(const TomlReader& t, ContactLawParams& p) {
+  for (const LawCoefficient& c : law_coefficients()) {
+    if (!is_used_by(c, p.kind)) continue;
+    const bool positive = c.bound == LawCoefficient::Bound::positive;
+    if (c.required) {
+      SG_ASSERT(positive, c.key << ": a required coefficient is read as a positive number");
+      p.*c.member = t.positive(c.key);
+      continue;
+    }
+    const double fallback = c.fallback_member ? p.*c.fallback_member : c.fallback;
+    p.*c.member = positive ? t.positive(c.key, fallback) : t.non_negative(c.key, fallback);
   }
+}
+
+// The keys a [[contact_laws]] table may hold: those every law reads, and the table's.
+std::vector<std::string> known_keys() {
+  std::vector<std::string> keys = {
+      "materials",     "law",      "normal_stiffness", "tangential_stiffness",
+      "friction",      "adhesion", "shear_strength",   "cohesion",
+      "damping_ratio", "length"};
+  for (const LawCoefficient& c : law_coefficients())
+    keys.emplace_back(c.key);
+  return keys;
 }
 
 }  // namespace
 
 ContactLawDef read_contact_law(const TomlReader& t) {
-  t.reject_unknown_keys({"materials",
-                         "law",
-                         "normal_stiffness",
-                         "tangential_stiffness",
-                         "friction",
-                         "adhesion",
-                         "shear_strength",
-                         "cohesion",
-                         "damping_ratio",
-                         "length",
-                         "unloading_ratio",
-                         "bond_normal_stiffness",
-                         "bond_tensile_strength",
-                         "bond_shear_strength",
-                         "bond_friction",
-                         "bond_gap",
-                         "peak_traction",
-                         "critical_opening",
-                         "residual_traction",
-                         "mixed_mode_ratio"});
+  t.reject_unknown_keys(known_keys());
   ContactLawDef d;
   const auto pair = t.string_pair("materials");
   d.material_a = pair.first;
@@ -98,20 +83,7 @@ ContactLawDef read_contact_law(const TomlReader& t) {
   p.length = t.one_of("length", {"current", "initial"}, "current") == "current"
                  ? ContactLength::current
                  : ContactLength::initial;
-  p.unloading_ratio = t.positive("unloading_ratio", 1.0);
-  if (p.kind == ContactLawKind::bonded) {
-    p.bond_normal_stiffness = t.positive("bond_normal_stiffness", p.normal_stiffness);
-    p.bond_tensile_strength = t.non_negative("bond_tensile_strength", 0.0);
-    p.bond_shear_strength = t.non_negative("bond_shear_strength", 0.0);
-    p.bond_friction = t.non_negative("bond_friction", 0.0);
-  }
-  p.bond_gap = t.non_negative("bond_gap", 0.0);
-  if (p.kind == ContactLawKind::cohesive_zone) {
-    p.peak_traction = t.positive("peak_traction");
-    p.critical_opening = t.positive("critical_opening");
-    p.residual_traction = t.non_negative("residual_traction", 0.0);
-    p.mixed_mode_ratio = t.positive("mixed_mode_ratio", 1.0);
-  }
+  read_kind_coefficients(t, p);
   try {
     validate(p, "contact law for materials '" + d.material_a + "' and '" + d.material_b + "'");
   } catch (const Error& e) {

@@ -204,6 +204,10 @@ std::vector<TomlReader> TomlReader::array_of_tables(const std::string& key) cons
 }
 
 void TomlReader::reject_unknown_keys(std::initializer_list<const char*> known) const {
+  reject_unknown_keys(std::vector<std::string>(known.begin(), known.end()));
+}
+
+void TomlReader::reject_unknown_keys(const std::vector<std::string>& known) const {
   const std::set<std::string> allowed(known.begin(), known.end());
   for (const auto& [k, v] : *table_) {
     const std::string key(k.str());

@@ -56,6 +56,7 @@ class TomlReader {
 
   // Throws if the table holds a key not in `known`.
   void reject_unknown_keys(std::initializer_list<const char*> known) const;
+  void reject_unknown_keys(const std::vector<std::string>& known) const;
 
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
   const std::filesystem::path& file() const { return file_; }

@@ -1,4 +1,4 @@
-// The contact network of a run (contacts/NNNNNN.vtu, io/run.cpp) describes the instant its
+// The contact network of a run (contacts/NNNNNN.vtu, run/run.cpp) describes the instant its
 // snapshot is labelled with: every contact's slave point is where the fields snapshot of the
 // same index (the state at that time) has that body's contour point, and its gap against the
 // floor is that point's height above it. The first snapshot (t = 0) shows the contacts of the

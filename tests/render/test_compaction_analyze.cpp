@@ -64,7 +64,7 @@ TEST(CompactionAnalyze, CurveMatchesGenerateAndTheBuilderAndGrowsAsTheLidDescend
   EXPECT_EQ(c.width, run.width);
 
   // Start: what `softgrain generate` reports (grain contour areas A0; the box W x H0 read off
-  // the built walls). Every column of a series.csv row describes the row's time (io/run.cpp
+  // the built walls). Every column of a series.csv row describes the row's time (run/run.cpp
   // takes the positions before the step whose force evaluation the row reports), so the first
   // row's lid is where the builder put it; only the CSVs' 12 digits separate the two.
   const nlohmann::json sample = read_json(run.dir / "sample" / "sample.json");

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "contact/law_coefficients.h"
 #include "scenario/scenario.h"
 #include "scenes/scenario_files.h"
 #include "scenes/tiny_scenario.h"
@@ -104,6 +105,66 @@ TEST(ContactLawDef, ErrorsNameFileLineAndKey) {
     EXPECT_NE(what.find(c.expected), std::string::npos) << "got: " << what;
     EXPECT_NE(what.find("bad.toml:"), std::string::npos) << "got: " << what;
   }
+}
+
+}  // namespace
+}  // namespace sg
+
+namespace sg {
+namespace {
+
+// A minimal valid law of each kind, as a scenario writes it (cohesive_zone needs its two
+// required coefficients).
+std::string minimal_law(ContactLawKind kind) {
+  std::string text =
+      std::string("law = \"") + contact_law_kind_name(kind) + "\"\nnormal_stiffness = 1000.0";
+  if (kind == ContactLawKind::cohesive_zone)
+    text += "\npeak_traction = 1.0\ncritical_opening = 0.1";
+  return text;
+}
+
+// The value a law takes for `c` when the key is absent: valid for every law that uses it.
+double value_when_absent(const LawCoefficient& c, const ContactLawParams& read) {
+  return c.fallback_member ? read.*c.fallback_member : c.fallback;
+}
+
+// The shared table (contact/law_coefficients.h) is what the reader accepts: every row's key
+// is read into its member for each law that uses it, and refused for every other law with the
+// names of the laws that use it. A row added to the table is covered here without a new test.
+TEST(ContactLawDef, TheSharedCoefficientTableIsWhatTheReaderAccepts) {
+  const ContactLawKind kinds[] = {ContactLawKind::frictionless, ContactLawKind::coulomb,
+                                  ContactLawKind::cohesive,     ContactLawKind::two_slope,
+                                  ContactLawKind::bonded,       ContactLawKind::cohesive_zone};
+  ASSERT_FALSE(law_coefficients().empty());
+  for (const ContactLawKind kind : kinds) {
+    const std::string base = minimal_law(kind);
+    const ContactLawParams defaults = first_law(with_law(base));
+    for (const LawCoefficient& c : law_coefficients()) {
+      SCOPED_TRACE(std::string(c.key) + " on a " + contact_law_kind_name(kind) + " law");
+      if (base.find(std::string(c.key) + " =") != std::string::npos) continue;  // required
+      if (is_used_by(c, kind)) {
+        // A value other than the default, within the bounds of every row: it must arrive.
+        const double value = value_when_absent(c, defaults) == 0.5 ? 0.25 : 0.5;
+        const ContactLawParams read =
+            first_law(with_law(base + "\n" + c.key + " = " + std::to_string(value)));
+        EXPECT_EQ(read.*c.member, value);
+        EXPECT_EQ(defaults.*c.member, value_when_absent(c, defaults));
+      } else {
+        const std::string what =
+            error_of(with_law(base + "\n" + c.key + " = " + std::to_string(c.unused_value)));
+        EXPECT_NE(what.find(std::string("contact_laws[0].") + c.key + "'"), std::string::npos)
+            << what;
+        EXPECT_NE(what.find("applies only to law = " + names_of_laws_using(c)), std::string::npos)
+            << what;
+        EXPECT_EQ(defaults.*c.member, c.unused_value);
+      }
+    }
+  }
+  // A key in no row and read by no law is unknown.
+  const std::string unknown =
+      error_of(with_law(minimal_law(ContactLawKind::bonded) + "\nbond_fatigue_limit = 0.5"));
+  EXPECT_NE(unknown.find("contact_laws[0].bond_fatigue_limit'"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("unknown key"), std::string::npos) << unknown;
 }
 
 }  // namespace
