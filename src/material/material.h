@@ -22,6 +22,9 @@ enum class MaterialLaw {
 };
 
 const char* to_string(MaterialLaw law);
+// Every law, for readers that parse a name by to_string (scenario/toml_reader.h, named_value).
+inline constexpr MaterialLaw kMaterialLaws[] = {MaterialLaw::neo_hookean,
+                                                MaterialLaw::saint_venant_kirchhoff};
 
 // The form of the stiffness-proportional (Kelvin-Voigt) damping, f_v = -C v with C ~ alpha K
 // (docs/method.md "Damping models"). All three coincide at small strain and small rotation.
@@ -42,6 +45,9 @@ enum class DampingModel {
 };
 
 const char* to_string(DampingModel model);
+// Every model, for readers that parse a name by to_string (scenario/toml_reader.h, named_value).
+inline constexpr DampingModel kDampingModels[] = {
+    DampingModel::objective, DampingModel::corotational, DampingModel::reference_stiffness};
 
 struct MaterialDef {
   std::string name;

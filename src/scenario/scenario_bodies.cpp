@@ -16,19 +16,14 @@ MaterialDef read_material(const TomlReader& t) {
   t.reject_unknown_keys({"name", "law", "young", "poisson", "density", "damping", "damping_model"});
   MaterialDef m;
   m.name = t.string("name");
-  const std::string law = t.one_of("law", {"neo_hookean", "saint_venant_kirchhoff"}, "neo_hookean");
-  m.law = law == "neo_hookean" ? MaterialLaw::neo_hookean : MaterialLaw::saint_venant_kirchhoff;
+  m.law = t.named_value("law", kMaterialLaws, MaterialLaw::neo_hookean);
   m.young = t.positive("young");
   m.poisson = t.number("poisson", 0.3);
   if (!(m.poisson > -1.0 && m.poisson < 0.5))
     t.fail("poisson", "expected a number in (-1, 0.5), got " + std::to_string(m.poisson));
   m.density = t.positive("density", 1.0);
   m.damping = t.non_negative("damping", 0.0);
-  const std::string damping_model =
-      t.one_of("damping_model", {"objective", "corotational", "reference_stiffness"}, "objective");
-  m.damping_model = damping_model == "objective"      ? DampingModel::objective
-                    : damping_model == "corotational" ? DampingModel::corotational
-                                                      : DampingModel::reference_stiffness;
+  m.damping_model = t.named_value("damping_model", kDampingModels, DampingModel::objective);
   return m;
 }
 

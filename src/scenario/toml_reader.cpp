@@ -107,9 +107,14 @@ std::string TomlReader::string(const std::string& key, const std::string& fallba
 
 std::string TomlReader::one_of(const std::string& key, std::initializer_list<const char*> choices,
                                const char* fallback) const {
-  const std::string v = has(key) ? string(key) : std::string(fallback);
+  return one_of(key, std::vector<std::string>(choices.begin(), choices.end()), fallback);
+}
+
+std::string TomlReader::one_of(const std::string& key, const std::vector<std::string>& choices,
+                               const std::string& fallback) const {
+  const std::string v = has(key) ? string(key) : fallback;
   std::string list;
-  for (const char* c : choices) {
+  for (const std::string& c : choices) {
     if (v == c) return v;
     list += std::string(list.empty() ? "" : ", ") + "\"" + c + "\"";
   }

@@ -37,6 +37,20 @@ class TomlReader {
   std::string string(const std::string& key, const std::string& fallback) const;
   std::string one_of(const std::string& key, std::initializer_list<const char*> choices,
                      const char* fallback) const;
+  std::string one_of(const std::string& key, const std::vector<std::string>& choices,
+                     const std::string& fallback) const;
+  // One of `values` (an enum's list of every value), by the name to_string gives it: the
+  // enum's one table of names serves both the reader and the writers (run.log).
+  template <class Enum, std::size_t N>
+  Enum named_value(const std::string& key, const Enum (&values)[N], Enum fallback) const {
+    std::vector<std::string> names;
+    for (const Enum v : values)
+      names.emplace_back(to_string(v));
+    const std::string name = one_of(key, names, to_string(fallback));
+    for (const Enum v : values)
+      if (name == to_string(v)) return v;
+    return fallback;  // not reached: one_of refused any other name
+  }
   // A required pair of strings ["a", "b"].
   std::pair<std::string, std::string> string_pair(const std::string& key) const;
   Vec2 vec2(const std::string& key) const;
