@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "command_registry.h"
+#include "core/exit_status.h"
 #include "render/plot_runner.h"
 #include "report/analyze_run.h"
 
@@ -123,7 +124,22 @@ const Registration registration(
                &r.cylinders_path, &r.att_path, &r.compaction_path})
            if (!path->empty()) std::cout << ", " << path->filename().string();
          std::cout << "\n";
-         return a->no_plots ? 0 : draw_plots(a->run_dir, a->plots);
+         const int plot_status = a->no_plots ? 0 : draw_plots(a->run_dir, a->plots);
+         // The window's failed steadiness checks (analysis/steadiness.h), where they are seen.
+         if (!r.summary.warnings.empty()) {
+           std::cout << "\nWARNINGS (the window is not steady; the averages are suspect):\n";
+           for (const SteadinessWarning& w : r.summary.warnings)
+             std::cout << "  - " << w.check << ": " << w.message << "\n";
+         }
+         // Last, where it is seen: what the run asks for and did not give (exit status 3).
+         for (const Unmeasured& u : r.unmeasured)
+           std::cout << "\nNOT MEASURED: " << u.quantity << ": " << u.reason << "\n";
+         if (!r.unmeasured.empty()) {
+           std::cout << "analyze: exit status " << kExitUnmeasured
+                     << " (summary written without what is not measured)\n";
+           return kExitUnmeasured;
+         }
+         return plot_status;
        });
      },
      30});

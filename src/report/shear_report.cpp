@@ -4,6 +4,7 @@
 #include "analysis/driven_body.h"
 #include "analysis/energy_budget.h"
 #include "analysis/friction.h"
+#include "analysis/steadiness.h"
 #include "analysis/steady_state.h"
 #include "core/error.h"
 #include "report/analyze_steps.h"
@@ -35,14 +36,23 @@ std::vector<DrivenBody> shear_cell_columns(const Series& series, std::vector<std
   return bodies;
 }
 
-// The given window, else MSER on the driven bodies' forces, else the whole run.
+// The given window, else MSER on the driven bodies' forces after the compaction or load ramp,
+// else the whole run.
 TimeWindow choose_window(const Series& series, std::span<const DrivenBody> bodies,
-                         const AnalyzeOptions& options, std::vector<std::string>& notes) {
+                         const AnalyzeOptions& options, double loading_end,
+                         std::vector<std::string>& notes) {
   TimeWindow window;
   if (options.window) {
     window = window_from_times(series, options.window->first, options.window->second);
+    if (window.t_begin < loading_end)
+      notes.push_back("window: the given window starts at " + number(window.t_begin) +
+                      ", inside the compaction or load ramp (which ends at " + number(loading_end) +
+                      ")");
   } else if (!bodies.empty()) {
-    window = detect_steady_window(series, bodies);
+    window = detect_steady_window(series, bodies, 5, loading_end);
+    if (std::isfinite(loading_end))
+      notes.push_back("window: MSER-5 on the rows after the compaction or load ramp (t >= " +
+                      number(loading_end) + ")");
   } else {
     window.first = 0;
     window.last = series.size() - 1;
@@ -84,18 +94,24 @@ void analyze_shear(AnalyzeResult& r, const Series& series, const RunInfo& run,
   std::vector<std::string>& notes = r.notes;
   const std::vector<DrivenBody> bodies = shear_cell_columns(series, notes);
   AnalysisSummary& s = r.summary;
-  s.window = choose_window(series, bodies, options, notes);
+  s.window = choose_window(series, bodies, options, run.loading_end, notes);
   measure_gap(r, series, run, run_dir);
   s.friction.mean = unknown_friction("mean");
+  std::string why_no_mu = "series.csv has no 'top' and 'bottom' columns";
   if (!bodies.empty()) {
     try {
       s.friction = compute_friction(series, bodies, s.window, r.parameters.length);
+      why_no_mu = "mu is not finite";
     } catch (const Error& e) {
       notes.push_back(std::string("friction not computed: ") + e.what());
+      why_no_mu = e.what();
       s.friction.bodies.clear();
       s.friction.mean = unknown_friction("mean");
     }
   }
+  // A shear cell is run to measure its friction: failing to is not a success.
+  if ((run.shear_cell || !bodies.empty()) && !std::isfinite(s.friction.mean.mu))
+    r.unmeasured.push_back({"mu", why_no_mu});
   s.dimensionless = compute_dimensionless(r.parameters, s.friction.mean.normal_stress);
   note_dimensionless_gaps(r, notes);
   try {
@@ -104,6 +120,9 @@ void analyze_shear(AnalyzeResult& r, const Series& series, const RunInfo& run,
   } catch (const Error& e) {
     notes.push_back(std::string("energy budget not computed: ") + e.what());
   }
+  if (!bodies.empty() && std::isfinite(s.friction.mean.mu))
+    s.warnings =
+        check_steadiness(series, s.window, bodies, s.friction, s.energy, r.parameters.velocity);
 }
 
 }  // namespace sg::report
