@@ -22,6 +22,7 @@ struct AnalyzeArguments {
   bool no_agglomerates = false;
   double threshold = 0.8;
   std::vector<double> att_thresholds;
+  double stress_imbalance = SteadinessThresholds{}.stress_imbalance;
   bool plots = false, no_plots = false;
 };
 
@@ -83,6 +84,11 @@ const Registration registration(
                        "shares of the velocity jump LO HI bounding the activated third-body "
                        "thickness (paper 003: 0.2 0.8)")
            ->expected(2);
+       cmd->add_option("--stress-imbalance", a->stress_imbalance,
+                       "warn when the top and bottom mean normal stresses differ by more than "
+                       "this fraction of their mean (docs/analysis.md, steadiness checks)")
+           ->check(CLI::PositiveNumber)
+           ->capture_default_str();
        CLI::Option* plots = cmd->add_flag(
            "--plots", a->plots,
            "draw mu(t), profiles, energy shares, agglomerate PDFs, the compaction curve into "
@@ -105,6 +111,7 @@ const Registration registration(
          o.agglomerates = !a->no_agglomerates;
          o.coherence_threshold = a->threshold;
          if (a->att_thresholds.size() == 2) o.att = {a->att_thresholds[0], a->att_thresholds[1]};
+         o.steadiness.stress_imbalance = a->stress_imbalance;
          const AnalyzeResult r = analyze_run(a->run_dir, o);
          std::cout << format_summary_table(r.summary);
          if (r.compaction) std::cout << format_compaction_table(*r.compaction);

@@ -48,9 +48,10 @@ MserResult mser_truncation(std::span<const double> signal, std::size_t batch = 5
 
 // Steady-state window by MSER-m on Fn(t) and Ft(t) of each body; ends at the last row.
 // `not_before`: the end of what the scenario drives on purpose before the steady state (the
-// shear cell's compaction or load ramp, a drive's last breakpoint): MSER looks only at the
-// rows from that time on, so the window never starts inside it (issue #29: a window started
-// at t = 1.2 inside the load ramp).
+// shear cell's compaction or load ramp, a drive's last breakpoint): when MSER over the whole
+// series starts before it (a ramp whose bias is below the noise; issue #29: a window started at
+// t = 1.2 inside the load ramp), MSER runs again on the rows from that time on, so the window
+// never starts inside it; a window MSER puts after it is unchanged.
 TimeWindow detect_steady_window(const Series& series, std::span<const DrivenBody> bodies,
                                 std::size_t batch = 5,
                                 double not_before = -std::numeric_limits<double>::infinity());

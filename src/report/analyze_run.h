@@ -57,6 +57,7 @@ struct AnalyzeOptions {
   bool agglomerates = true;
   double coherence_threshold = 0.8;  // |C| > threshold marks a structure (paper 002: 0.8)
   AttThresholds att;                 // shares of the velocity jump (paper 003: 0.2, 0.8)
+  SteadinessThresholds steadiness;   // when the window's checks warn (analysis/steadiness.h)
 };
 
 struct ParameterSource {

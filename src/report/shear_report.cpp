@@ -51,8 +51,8 @@ TimeWindow choose_window(const Series& series, std::span<const DrivenBody> bodie
   } else if (!bodies.empty()) {
     window = detect_steady_window(series, bodies, 5, loading_end);
     if (std::isfinite(loading_end))
-      notes.push_back("window: MSER-5 on the rows after the compaction or load ramp (t >= " +
-                      number(loading_end) + ")");
+      notes.push_back(
+          "window: detected after the compaction or load ramp (t >= " + number(loading_end) + ")");
   } else {
     window.first = 0;
     window.last = series.size() - 1;
@@ -121,8 +121,8 @@ void analyze_shear(AnalyzeResult& r, const Series& series, const RunInfo& run,
     notes.push_back(std::string("energy budget not computed: ") + e.what());
   }
   if (!bodies.empty() && std::isfinite(s.friction.mean.mu))
-    s.warnings =
-        check_steadiness(series, s.window, bodies, s.friction, s.energy, r.parameters.velocity);
+    s.warnings = check_steadiness(series, s.window, bodies, s.friction, s.energy,
+                                  r.parameters.velocity, options.steadiness);
 }
 
 }  // namespace sg::report

@@ -134,14 +134,14 @@ Series make_cell(const CellShape& shape, std::uint64_t seed = 7) {
   return s;
 }
 
-std::set<std::string> warnings_of(const Series& s) {
+std::set<std::string> warnings_of(const Series& s, const SteadinessThresholds& thresholds = {}) {
   const auto bodies = shear_cell_bodies();
   const TimeWindow w = window_from_times(s, 0.0, std::numeric_limits<double>::infinity());
   const FrictionResult f = compute_friction(s, bodies, w, 10.0);
   const EnergyBudget e =
       compute_energy_budget(s, w, f.mean.mu, f.mean.normal_force, /*velocity=*/1.0);
   std::set<std::string> checks;
-  for (const SteadinessWarning& warning : check_steadiness(s, w, bodies, f, e, 1.0)) {
+  for (const SteadinessWarning& warning : check_steadiness(s, w, bodies, f, e, 1.0, thresholds)) {
     EXPECT_FALSE(warning.message.empty());
     checks.insert(warning.check);
   }
@@ -159,6 +159,9 @@ TEST(Steadiness, TopAndBottomStressesApart) {
   // 10% more on the bottom: 9.5% of the mean, beyond 5%.
   EXPECT_EQ(warnings_of(make_cell({.bottom_normal = 1.1})), Checks{"stress_imbalance"});
   EXPECT_EQ(warnings_of(make_cell({.bottom_normal = 1.03})), Checks{});  // 3%: within
+  // The fraction is a setting (analyze --stress-imbalance): 3% apart is beyond 2%.
+  EXPECT_EQ(warnings_of(make_cell({.bottom_normal = 1.03}), {.stress_imbalance = 0.02}),
+            Checks{"stress_imbalance"});
 }
 
 TEST(Steadiness, KineticEnergyFallingInTheWindow) {

@@ -22,7 +22,8 @@ TEST(AnalyzeWindow, StartsAfterTheCompactionOfTheScenario) {
   EXPECT_GE(r.summary.window.t_begin, 1.5);
   bool noted = false;
   for (const std::string& n : r.notes)
-    noted = noted || n.find("after the compaction or load ramp (t >= 1.5)") != std::string::npos;
+    noted = noted ||
+            n.find("detected after the compaction or load ramp (t >= 1.5)") != std::string::npos;
   EXPECT_TRUE(noted);
 
   std::ifstream in(r.summary_path);
