@@ -29,7 +29,8 @@ are there (otherwise it says why and goes on):
                        from the profile, the window means as lines (paper 003 Fig. 13; att.csv)
 
 Needs numpy and matplotlib (Debian: python3-numpy, python3-matplotlib). Each picture is
-written to a temporary file and renamed, so a reader never sees half a PNG. Exit status 0
+written to a temporary file and renamed, so a reader never sees half a PNG, and names in its
+PNG "Software" text the softgrain version and commit that wrote summary.json. Exit status 0
 if every picture whose inputs exist was drawn, 1 on an error (one line on stderr).
 """
 
@@ -109,9 +110,21 @@ def note_warnings(fig, summary):
     return True
 
 
+# The PNG "Software" text of every picture: the softgrain that wrote summary.json (its
+# "softgrain" object), as softgrain's own pictures carry it; set by main().
+SOFTWARE = None
+
+
+def software_of(summary):
+    s = summary.get("softgrain")
+    if not isinstance(s, dict):
+        return None  # written before softgrain recorded itself
+    return f"softgrain {s.get('version', '?')} (commit {s.get('commit', 'unknown')}), plot_run.py"
+
+
 def save(fig, path):
     tmp = path + ".tmp.png"
-    fig.savefig(tmp, dpi=110)
+    fig.savefig(tmp, dpi=110, metadata={"Software": SOFTWARE} if SOFTWARE else None)
     plt.close(fig)
     os.replace(tmp, path)
     return path
@@ -367,6 +380,8 @@ def main(argv):
     analysis_dir = os.path.join(run_dir, "analysis")
     try:
         summary = read_summary(analysis_dir)
+        global SOFTWARE
+        SOFTWARE = software_of(summary)
         written, skipped = [], []
         for draw in (lambda: plot_mu(run_dir, analysis_dir, summary),
                      lambda: plot_profiles(analysis_dir),
