@@ -4,8 +4,11 @@
 // and summary.json carries the steadiness checks, what was not measured, and mu's error.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "render/run_folder.h"
 #include "report/analyze_run.h"
@@ -39,6 +42,39 @@ TEST(AnalyzeWindow, StartsAfterTheCompactionOfTheScenario) {
   if (!mu.is_null()) {
     EXPECT_GT(doc.at("quantities").at("mu_error").at("value").get<double>(), 0.0);
   }
+}
+
+// The same run cut just after its compaction (3 series rows after t = 1.5): no steady state can
+// be detected after the compaction, and mu is said not measured, with that reason, instead of
+// being measured on a window inside the compaction (or the analysis failing as a whole).
+TEST(AnalyzeWindow, TooFewRowsAfterTheCompactionLeaveMuUnmeasured) {
+  namespace fs = std::filesystem;
+  const fs::path& full = test::tiny_shear_run_dir();
+  const fs::path cut = full.parent_path() / "tiny-shear-cut";
+  fs::remove_all(cut);
+  fs::create_directories(cut);
+  fs::copy_file(full / "run.log", cut / "run.log");
+  std::ifstream in(full / "series.csv");
+  std::ofstream out(cut / "series.csv");
+  std::string line;
+  std::getline(in, line);
+  out << line << "\n";
+  int rows = 0;
+  while (std::getline(in, line) && std::stod(line.substr(0, line.find(','))) <= 1.525) {
+    out << line << "\n";
+    ++rows;
+  }
+  out.close();
+  ASSERT_GT(rows, 100);
+  const AnalyzeResult r = analyze_run(cut, AnalyzeOptions{});
+  ASSERT_EQ(r.unmeasured.size(), 1u);
+  EXPECT_EQ(r.unmeasured[0].quantity, "mu");
+  EXPECT_NE(r.unmeasured[0].reason.find("no steady-state window"), std::string::npos)
+      << r.unmeasured[0].reason;
+  EXPECT_NE(r.unmeasured[0].reason.find("after t = 1.5"), std::string::npos)
+      << r.unmeasured[0].reason;
+  EXPECT_TRUE(std::isnan(r.summary.friction.mean.mu));
+  EXPECT_FALSE(r.summary.window.detected);
 }
 
 }  // namespace
