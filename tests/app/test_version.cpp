@@ -48,9 +48,11 @@ TEST(Version, PrintsTheVersionAndTheCommitOfTheSources) {
   if (commit.empty()) {
     EXPECT_EQ(m[2].str(), "unknown");
   } else {
-    // The hash of HEAD, "-dirty" if tracked files were modified when it was built.
+    // The hash of HEAD, "-dirty" if tracked files were modified when it was built. (A commit
+    // made after the build fails this until the next build, which regenerates version.cpp.)
     EXPECT_TRUE(m[2].str() == commit || m[2].str() == commit + "-dirty")
-        << m[2] << " vs " << commit;
+        << "softgrain was built from commit " << m[2] << ", the sources are at " << commit
+        << " (rebuild before testing)";
   }
 }
 
