@@ -9,6 +9,8 @@
 
 #include "command_registry.h"
 #include "core/error.h"
+#include "core/nearest_name.h"
+#include "core/version.h"
 
 namespace sg::app {
 
@@ -34,6 +36,24 @@ void choose_omp_wait_policy(char** argv) {
   execv("/proc/self/exe", argv);
 }
 
+// CLI11 answers a misspelled subcommand ("softgrain rnu x.toml") with "A subcommand is
+// required", which does not say what went wrong: the word it did not know is the first
+// argument left over, so name it with the nearest subcommand.
+int report_parse_error(CLI::App& app, const CLI::ParseError& e) {
+  const std::vector<std::string> left = app.remaining();
+  if (dynamic_cast<const CLI::RequiredError*>(&e) && app.get_subcommands().empty() &&
+      !left.empty() && !left.front().empty() && left.front().front() != '-') {
+    std::vector<std::string> names;
+    for (const CLI::App* sub : app.get_subcommands({}))
+      names.push_back(sub->get_name());
+    std::cerr << "softgrain: unknown subcommand '" << left.front() << "'; nearest: '"
+              << nearest_name(left.front(), names) << "' (subcommands: " << join_names(names)
+              << "; softgrain --help)\n";
+    return static_cast<int>(CLI::ExitCodes::RequiredError);
+  }
+  return app.exit(e);
+}
+
 }  // namespace sg::app
 
 int main(int argc, char** argv) {
@@ -50,6 +70,8 @@ int main(int argc, char** argv) {
       "out/<name>/sample/\n"
       "Each subcommand has its own --help.");
   app.require_subcommand(1);
+  app.set_version_flag("--version", sg::softgrain_version_line(),
+                       "print the version and the git commit it was built from");
   // Global options (--threads) are accepted after the subcommand too: subcommands created
   // below inherit this and pass options they do not know to the main app.
   app.fallthrough();
@@ -66,7 +88,11 @@ int main(int argc, char** argv) {
     CLI::App* sub = app.get_subcommands({})[before];
     runners.emplace_back(sub, std::move(run));
   }
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return report_parse_error(app, e);
+  }
   try {
     for (auto& [sub, run] : runners)
       if (sub->parsed()) return run();

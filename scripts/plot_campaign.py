@@ -109,9 +109,25 @@ def column(rows, key):
     return np.array([number(r.get(key, "")) for r in rows if r["status"] == "done"])
 
 
+# The PNG "Software" text of every figure: the softgrain builds that analysed the runs
+# (campaign.csv's column "softgrain"); set by main().
+SOFTWARE = None
+
+
+def software_of(rows):
+    builds = sorted({r.get("softgrain", "") for r in rows} - {""})
+    if not builds:
+        return None  # a table written before softgrain recorded itself
+    return "softgrain " + "; ".join(builds) + " (the runs' analyses), plot_campaign.py"
+
+
+def metadata():
+    return {"Software": SOFTWARE} if SOFTWARE else None
+
+
 def save(fig, path):
     tmp = path + ".tmp.png"
-    fig.savefig(tmp)
+    fig.savefig(tmp, metadata=metadata())
     plt.close(fig)
     os.replace(tmp, path)
     print(path)
@@ -255,6 +271,8 @@ def main():
         rows = [dict(zip(header, r)) for r in reader]
     if "id" not in header or "status" not in header:
         sys.exit(f"{args.table}: not a campaign table (no 'id' and 'status' columns)")
+    global SOFTWARE
+    SOFTWARE = software_of(rows)
     parameters = header[header.index("id") + 1:header.index("status")]
     if not parameters:
         sys.exit(f"{args.table}: no varied parameter")
@@ -320,7 +338,7 @@ def main():
         fig.colorbar(mesh, ax=ax, label=z_key)
     ax.set_title(f"{campaign}: {z_key} ({done} of {len(rows)} runs done)")
     fig.tight_layout()
-    fig.savefig(output)
+    fig.savefig(output, metadata=metadata())
     plt.close(fig)
     print(output)
     if args.all:

@@ -8,12 +8,13 @@ are there (otherwise it says why and goes on):
 
   mu.png               mu(t) = Ft(t)/Fn(t) of the first bodies `top` and `bottom` (series.csv,
                        sign convention of docs/analysis.md), the steady window shaded and
-                       the window means (summary.json) as lines
+                       the window means (summary.json) as lines; the window's failed
+                       steadiness checks (summary.json "warnings") in red under it
   profiles.png         vx and vy across the gap: mean +- one standard deviation per bin
                        (profiles.csv)
   energy.png           shares of the dissipation p_wb (bulk damping) and p_ws (contacts), and
                        the mean powers over the window: damping, contacts, external work
-                       (summary.json)
+                       (summary.json); the failed steadiness checks in red, as for mu.png
   agglomerate_pdfs.png grain-weighted PDFs of omega~, diameter and lifetime of the
                        agglomerates (agglomerate_pdfs.csv)
   compaction.png       compaction-box runs only: solid fraction against lid stress, and both
@@ -28,7 +29,8 @@ are there (otherwise it says why and goes on):
                        from the profile, the window means as lines (paper 003 Fig. 13; att.csv)
 
 Needs numpy and matplotlib (Debian: python3-numpy, python3-matplotlib). Each picture is
-written to a temporary file and renamed, so a reader never sees half a PNG. Exit status 0
+written to a temporary file and renamed, so a reader never sees half a PNG, and names in its
+PNG "Software" text the softgrain version and commit that wrote summary.json. Exit status 0
 if every picture whose inputs exist was drawn, 1 on an error (one line on stderr).
 """
 
@@ -97,9 +99,32 @@ def value(summary, key):
     return None if q is None else q.get("value")
 
 
+def note_warnings(fig, summary):
+    """The window's failed steadiness checks (summary.json "warnings"), in red under the
+    picture: the averages drawn are suspect. Returns True if there were any."""
+    checks = [w.get("check", "?") for w in summary.get("warnings", [])]
+    if not checks:
+        return False
+    fig.text(0.01, 0.01, "window not steady (summary.json warnings): " + ", ".join(checks),
+             color="tab:red", fontsize=8, ha="left", va="bottom")
+    return True
+
+
+# The PNG "Software" text of every picture: the softgrain that wrote summary.json (its
+# "softgrain" object), as softgrain's own pictures carry it; set by main().
+SOFTWARE = None
+
+
+def software_of(summary):
+    s = summary.get("softgrain")
+    if not isinstance(s, dict):
+        return None  # written before softgrain recorded itself
+    return f"softgrain {s.get('version', '?')} (commit {s.get('commit', 'unknown')}), plot_run.py"
+
+
 def save(fig, path):
     tmp = path + ".tmp.png"
-    fig.savefig(tmp, dpi=110)
+    fig.savefig(tmp, dpi=110, metadata={"Software": SOFTWARE} if SOFTWARE else None)
     plt.close(fig)
     os.replace(tmp, path)
     return path
@@ -142,7 +167,7 @@ def plot_mu(run_dir, analysis_dir, summary):
     ax.set_ylabel("mu = Ft / Fn")
     ax.set_title("friction coefficient of the first bodies")
     ax.legend(fontsize=8, loc="best")
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0.05, 1, 1) if note_warnings(fig, summary) else None)
     return save(fig, os.path.join(analysis_dir, "mu.png")), None
 
 
@@ -198,7 +223,7 @@ def plot_energy(analysis_dir, summary):
     b.set_title("mean powers over the window (energy/time)", fontsize=10)
     for ax in (a, b):
         ax.tick_params(axis="x", labelsize=8)
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0.05, 1, 1) if note_warnings(fig, summary) else None)
     return save(fig, os.path.join(analysis_dir, "energy.png")), None
 
 
@@ -355,6 +380,8 @@ def main(argv):
     analysis_dir = os.path.join(run_dir, "analysis")
     try:
         summary = read_summary(analysis_dir)
+        global SOFTWARE
+        SOFTWARE = software_of(summary)
         written, skipped = [], []
         for draw in (lambda: plot_mu(run_dir, analysis_dir, summary),
                      lambda: plot_profiles(analysis_dir),

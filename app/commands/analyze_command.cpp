@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "command_registry.h"
+#include "core/exit_status.h"
 #include "render/plot_runner.h"
 #include "report/analyze_run.h"
 
@@ -21,6 +22,7 @@ struct AnalyzeArguments {
   bool no_agglomerates = false;
   double threshold = 0.8;
   std::vector<double> att_thresholds;
+  double stress_imbalance = SteadinessThresholds{}.stress_imbalance;
   bool plots = false, no_plots = false;
 };
 
@@ -82,6 +84,11 @@ const Registration registration(
                        "shares of the velocity jump LO HI bounding the activated third-body "
                        "thickness (paper 003: 0.2 0.8)")
            ->expected(2);
+       cmd->add_option("--stress-imbalance", a->stress_imbalance,
+                       "warn when the top and bottom mean normal stresses differ by more than "
+                       "this fraction of their mean (docs/analysis.md, steadiness checks)")
+           ->check(CLI::PositiveNumber)
+           ->capture_default_str();
        CLI::Option* plots = cmd->add_flag(
            "--plots", a->plots,
            "draw mu(t), profiles, energy shares, agglomerate PDFs, the compaction curve into "
@@ -104,6 +111,7 @@ const Registration registration(
          o.agglomerates = !a->no_agglomerates;
          o.coherence_threshold = a->threshold;
          if (a->att_thresholds.size() == 2) o.att = {a->att_thresholds[0], a->att_thresholds[1]};
+         o.steadiness.stress_imbalance = a->stress_imbalance;
          const AnalyzeResult r = analyze_run(a->run_dir, o);
          std::cout << format_summary_table(r.summary);
          if (r.compaction) std::cout << format_compaction_table(*r.compaction);
@@ -123,7 +131,22 @@ const Registration registration(
                &r.cylinders_path, &r.att_path, &r.compaction_path})
            if (!path->empty()) std::cout << ", " << path->filename().string();
          std::cout << "\n";
-         return a->no_plots ? 0 : draw_plots(a->run_dir, a->plots);
+         const int plot_status = a->no_plots ? 0 : draw_plots(a->run_dir, a->plots);
+         // The window's failed steadiness checks (analysis/steadiness.h), where they are seen.
+         if (!r.summary.warnings.empty()) {
+           std::cout << "\nWARNINGS (the window is not steady; the averages are suspect):\n";
+           for (const SteadinessWarning& w : r.summary.warnings)
+             std::cout << "  - " << w.check << ": " << w.message << "\n";
+         }
+         // Last, where it is seen: what the run asks for and did not give (exit status 3).
+         for (const Unmeasured& u : r.unmeasured)
+           std::cout << "\nNOT MEASURED: " << u.quantity << ": " << u.reason << "\n";
+         if (!r.unmeasured.empty()) {
+           std::cout << "analyze: exit status " << kExitUnmeasured
+                     << " (summary written without what is not measured)\n";
+           return kExitUnmeasured;
+         }
+         return plot_status;
        });
      },
      30});

@@ -1,10 +1,12 @@
 // softgrain render RUN_DIR: PNG snapshots of a field (and an MP4 when ffmpeg is present).
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
 #include "analysis/series.h"
 #include "command_registry.h"
 #include "core/error.h"
+#include "core/nearest_name.h"
 #include "render/run_folder.h"
 #include "render/snapshot_renderer.h"
 #include "report/analyze_run.h"
@@ -32,6 +34,17 @@ std::pair<int, int> parse_size(const std::string& text) {
   }
 }
 
+// A misspelled field is answered before any snapshot is read, with the one meant and every
+// choice (the .vtu's arrays alone would omit body and coherence).
+const CLI::Validator field_choice(
+    [](const std::string& field) -> std::string {
+      const std::vector<std::string>& choices = render_field_choices();
+      if (std::find(choices.begin(), choices.end(), field) != choices.end()) return "";
+      return "unknown field '" + field + "'; nearest: '" + nearest_name(field, choices) +
+             "'; the fields: " + join_names(choices);
+    },
+    "FIELD");
+
 const Registration registration(
     {"render",
      [](CLI::App& app, const GlobalOptions&) {
@@ -47,7 +60,8 @@ const Registration registration(
                        "sigma_xx | sigma_yy | sigma_xy | "
                        "displacement | coherence (paper 002 eq. 5 at each grain's centre, "
                        "from grains/NNNNNN.csv; range [-1, 1])")
-           ->capture_default_str();
+           ->capture_default_str()
+           ->check(field_choice);
        cmd->add_option("--size", args->size, "picture size WxH in pixels")->capture_default_str();
        cmd->add_option("--range", args->range, "colour range MIN MAX (default: over all frames)")
            ->expected(2);

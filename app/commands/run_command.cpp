@@ -1,4 +1,6 @@
 // softgrain run SCENARIO: simulate, writing the run folder.
+#include <unistd.h>
+
 #include <iostream>
 
 #include "command_registry.h"
@@ -38,6 +40,7 @@ const Registration registration(
          const ScenarioDef scenario = load_scenario(args->scenario);
          RunOptions run_options;
          run_options.progress = &std::cerr;
+         run_options.progress_on_terminal = ::isatty(STDERR_FILENO) == 1;
          run_options.output_root_override = args->output;
          run_options.resume = args->resume;
          run_options.profile = args->profile;

@@ -6,6 +6,7 @@
 #include "campaign/campaign_def.h"
 #include "campaign/sweep.h"
 #include "command_registry.h"
+#include "core/exit_status.h"
 
 namespace sg::app {
 namespace {
@@ -63,7 +64,8 @@ const Registration registration(
          o.out = &std::cout;
          const SweepResult r = sweep_campaign(campaign, o);
          if (r.interrupted) return 130;
-         return r.failed > 0 ? 1 : 0;
+         if (r.failed > 0) return 1;
+         return r.done_without_mu > 0 ? kExitUnmeasured : 0;
        });
      },
      50});

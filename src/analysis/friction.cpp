@@ -1,7 +1,9 @@
 #include "analysis/friction.h"
 
 #include <cmath>
+#include <vector>
 
+#include "analysis/autocorrelation.h"
 #include "core/error.h"
 
 namespace sg {
@@ -34,11 +36,16 @@ FrictionStats window_stats(const std::string& name, const std::vector<double>& n
   }
   mean_ratio /= n;
   double var = 0.0;
+  std::vector<double> ratio;
   for (std::size_t i = window.first; i <= window.last; ++i) {
     const double d = tangential[i] / normal[i] - mean_ratio;
     var += d * d;
+    ratio.push_back(tangential[i] / normal[i]);
   }
   s.mu_std = std::sqrt(var / (n - 1.0));  // sample std (n >= 2 by TimeWindow)
+  const MeanWithError e = mean_with_error(ratio);
+  s.mu_error = e.error;
+  s.mu_decorrelation_time = 2.0 * e.tau_int * (time[window.last] - time[window.first]) / (n - 1.0);
   if (length > 0.0) {
     s.normal_stress = s.normal_force / length;
     s.shear_stress = s.tangential_force / length;

@@ -6,6 +6,9 @@
 //   mu = Ft_bar / Fn_bar           ratio of the time averages (paper 002 eq. 4; paper 001
 //                                  eq. 1 prints the ratio upside down, a typo)
 //   mu_std = std over the window of mu(t) = Ft(t)/Fn(t)
+//   mu_error = mu_std sqrt(2 tau_int / n): error of the mean, n rows of which n / (2 tau_int)
+//              are independent (tau_int the integrated autocorrelation time of mu(t) in rows,
+//              Sokal 1997; analysis/autocorrelation.h)
 //   sigma_n = Fn_bar / L,  sigma_t = Ft_bar / L
 //   E~ = log10(E / sigma_n),  c~ = log10(c / sigma_n),  alpha~ = log10(alpha V / D)
 //
@@ -34,6 +37,10 @@ struct FrictionStats {
   double tangential_force = 0.0;  // Ft_bar (force)
   double mu = 0.0;                // Ft_bar / Fn_bar
   double mu_std = 0.0;            // std of Ft(t)/Fn(t) over the window
+  // Error of the mean of mu(t) over the window, mu_std sqrt(2 tau_int / n), and the
+  // decorrelation time 2 tau_int x (row interval) (time) of mu(t): autocorrelation.h.
+  double mu_error = RunParameters::kUnknown;
+  double mu_decorrelation_time = RunParameters::kUnknown;
   double normal_stress = RunParameters::kUnknown;  // Fn_bar / L (stress); NaN if L unknown
   double shear_stress = RunParameters::kUnknown;   // Ft_bar / L (stress)
 };

@@ -47,21 +47,48 @@ MserResult mser_truncation(std::span<const double> signal, std::size_t batch) {
   return best;
 }
 
-TimeWindow detect_steady_window(const Series& series, std::span<const DrivenBody> bodies,
-                                std::size_t batch) {
-  SG_VERIFY(!bodies.empty(), series.path << ": no driven body to detect a steady state on");
-  TimeWindow w;
-  w.detected = true;
-  std::size_t start = 0;
+namespace {
+
+// The latest MSER truncation over Fn and Ft of every body, on the rows from `offset` on.
+std::size_t mser_start(const Series& series, std::span<const DrivenBody> bodies, std::size_t batch,
+                       std::size_t offset, bool& at_limit) {
+  std::size_t start = offset;
+  at_limit = false;
   for (const auto& body : bodies) {
     const BodyForces f = body_forces(series, body);
     for (const auto* signal : {&f.normal, &f.tangential}) {
-      const MserResult r = mser_truncation(*signal, batch);
-      start = std::max(start, r.truncation);
-      w.truncation_at_limit = w.truncation_at_limit || r.at_limit;
+      const MserResult r = mser_truncation(std::span<const double>(*signal).subspan(offset), batch);
+      start = std::max(start, offset + r.truncation);
+      at_limit = at_limit || r.at_limit;
     }
   }
+  return start;
+}
+
+}  // namespace
+
+TimeWindow detect_steady_window(const Series& series, std::span<const DrivenBody> bodies,
+                                std::size_t batch, double not_before) {
+  SG_VERIFY(!bodies.empty(), series.path << ": no driven body to detect a steady state on");
   const auto time = series.column("time");
+  // The first row at or after `not_before` (up to round-off of the written times).
+  std::size_t first_allowed = 0;
+  while (first_allowed < time.size() &&
+         time[first_allowed] < not_before - 1e-9 * std::max(1.0, std::abs(not_before)))
+    ++first_allowed;
+  TimeWindow w;
+  w.detected = true;
+  // MSER over the whole series, as without a ramp; only if it starts inside the ramp (its bias
+  // below the noise), MSER again over the rows after it. A window already after the ramp is
+  // the one it always was.
+  std::size_t start = mser_start(series, bodies, batch, 0, w.truncation_at_limit);
+  if (start < first_allowed) {
+    SG_VERIFY(first_allowed + 2 * batch <= time.size(),
+              series.path << ": fewer than " << 2 * batch << " rows after t = " << not_before
+                          << " (the end of the compaction or load ramp): no steady state to "
+                             "detect; run longer");
+    start = mser_start(series, bodies, batch, first_allowed, w.truncation_at_limit);
+  }
   SG_VERIFY(start + 2 <= time.size(), series.path << ": steady-state window too short");
   w.first = start;
   w.last = time.size() - 1;

@@ -15,6 +15,7 @@
 // Applied to the normal and the tangential force of every driven body; the window starts
 // at the latest of these truncation points, so that every averaged signal is stationary.
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -46,8 +47,14 @@ struct MserResult {
 MserResult mser_truncation(std::span<const double> signal, std::size_t batch = 5);
 
 // Steady-state window by MSER-m on Fn(t) and Ft(t) of each body; ends at the last row.
+// `not_before`: the end of what the scenario drives on purpose before the steady state (the
+// shear cell's compaction or load ramp, a drive's last breakpoint): when MSER over the whole
+// series starts before it (a ramp whose bias is below the noise; issue #29: a window started at
+// t = 1.2 inside the load ramp), MSER runs again on the rows from that time on, so the window
+// never starts inside it; a window MSER puts after it is unchanged.
 TimeWindow detect_steady_window(const Series& series, std::span<const DrivenBody> bodies,
-                                std::size_t batch = 5);
+                                std::size_t batch = 5,
+                                double not_before = -std::numeric_limits<double>::infinity());
 
 // The window of rows with t_begin <= time <= t_end (t_end = +inf for "to the end").
 // Throws sg::Error if it holds fewer than 2 rows.

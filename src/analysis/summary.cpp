@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/version.h"
 #include "io/atomic_file.h"
 
 namespace sg {
@@ -19,6 +20,13 @@ void add_friction(std::vector<SummaryEntry>& e, const FrictionStats& f, const st
                    " (paper 002 eq. 4; paper 001 eq. 1)"});
   e.push_back({p + "mu_std", f.mu_std, "1",
                "sample standard deviation of mu(t) = Ft(t)/Fn(t) over the window, " + who});
+  e.push_back({p + "mu_error", f.mu_error, "1",
+               "error of the mean of mu(t) over the window, mu_std sqrt(2 tau_int / n) with "
+               "tau_int the integrated autocorrelation time of mu(t) (Sokal 1997), " +
+                   who});
+  e.push_back(
+      {p + "mu_decorrelation_time", f.mu_decorrelation_time, "time",
+       "2 tau_int x the row interval: the time between independent values of mu(t), " + who});
   e.push_back({p + "normal_force", f.normal_force, "force",
                "Fn_bar, mean normal force the layer exerts, " + who});
   e.push_back({p + "tangential_force", f.tangential_force, "force",
@@ -127,7 +135,14 @@ std::string summary_json(const AnalysisSummary& summary, const std::vector<Summa
   nlohmann::ordered_json doc;
   doc["format"] = "softgrain-analysis-summary";
   doc["version"] = 1;
+  // What computed it (core/version.h): the summary names the build, as run.log does.
+  doc["softgrain"] = {{"version", softgrain_version()}, {"commit", softgrain_commit()}};
   doc["quantities"] = std::move(quantities);
+  // The window's failed steadiness checks: the averages above are suspect (steadiness.h).
+  nlohmann::ordered_json warnings = nlohmann::ordered_json::array();
+  for (const SteadinessWarning& w : summary.warnings)
+    warnings.push_back({{"check", w.check}, {"message", w.message}});
+  doc["warnings"] = std::move(warnings);
   return doc.dump(2) + "\n";
 }
 

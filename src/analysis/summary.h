@@ -6,8 +6,10 @@
 //
 // summary.json layout (version 1):
 //   { "format": "softgrain-analysis-summary", "version": 1,
+//     "softgrain": { "version": "0.1.0", "commit": "<git hash>[-dirty]" | "unknown" },
 //     "quantities": { "<key>": { "value": <number|null>, "unit": "...",
-//                                "definition": "..." }, ... } }
+//                                "definition": "..." }, ... },
+//     "warnings": [ { "check": "mu_trend", "message": "..." }, ... ] }
 // Keys are stable; readers should refuse a version they do not know.
 #include <optional>
 #include <string>
@@ -16,6 +18,7 @@
 #include "analysis/agglomerate_statistics.h"
 #include "analysis/energy_budget.h"
 #include "analysis/friction.h"
+#include "analysis/steadiness.h"
 #include "analysis/steady_state.h"
 
 namespace sg {
@@ -29,6 +32,9 @@ struct AnalysisSummary {
   // Activated third-body thickness, mean over the window's snapshots (activated_thickness.h).
   double att_map = RunParameters::kUnknown, att_profile = RunParameters::kUnknown;
   std::optional<AgglomerateStatistics> agglomerates;  // absent without snapshots
+  // The steadiness checks the window failed (analysis/steadiness.h); empty: none failed, or
+  // not checked (no friction).
+  std::vector<SteadinessWarning> warnings;
 };
 
 struct SummaryEntry {

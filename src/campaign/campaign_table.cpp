@@ -31,8 +31,7 @@ std::string csv_number(double v) {
 
 }  // namespace
 
-std::vector<std::pair<std::string, double>> read_summary_quantities(
-    const std::filesystem::path& path) {
+SummaryRecord read_summary_record(const std::filesystem::path& path) {
   std::ifstream in(path);
   SG_VERIFY(in, "cannot read '" << path.string() << "'");
   nlohmann::ordered_json doc;
@@ -47,17 +46,32 @@ std::vector<std::pair<std::string, double>> read_summary_quantities(
   SG_VERIFY(doc.value("version", 0) == 1, path.string()
                                               << ": summary version " << doc.value("version", 0)
                                               << " is not known to this softgrain (expected 1)");
-  std::vector<std::pair<std::string, double>> out;
+  SummaryRecord out;
   for (const auto& [key, quantity] : doc.at("quantities").items()) {
     const auto& value = quantity.at("value");
-    out.emplace_back(
+    out.quantities.emplace_back(
         key, value.is_number() ? value.get<double>() : std::numeric_limits<double>::quiet_NaN());
   }
+  // Summaries written before softgrain recorded itself have no "softgrain": left empty.
+  if (const auto s = doc.find("softgrain"); s != doc.end() && s->is_object())
+    out.software = s->value("version", "?") + " " + s->value("commit", "unknown");
+  if (const auto u = doc.find("unmeasured"); u != doc.end() && u->is_array())
+    for (const auto& item : *u)
+      out.unmeasured += (out.unmeasured.empty() ? "" : "; ") + item.value("quantity", "?") + ": " +
+                        item.value("reason", "no reason given");
+  if (const auto w = doc.find("warnings"); w != doc.end() && w->is_array())
+    for (const auto& item : *w)
+      out.warnings += (out.warnings.empty() ? "" : "; ") + item.value("check", "?");
   return out;
 }
 
+std::vector<std::pair<std::string, double>> read_summary_quantities(
+    const std::filesystem::path& path) {
+  return read_summary_record(path).quantities;
+}
+
 double row_quantity(const CampaignRow& row, const std::string& key) {
-  for (const auto& [k, v] : row.quantities)
+  for (const auto& [k, v] : row.summary.quantities)
     if (k == key) return v;
   return std::numeric_limits<double>::quiet_NaN();
 }
@@ -67,13 +81,13 @@ std::string campaign_table_csv(const std::vector<std::string>& parameter_keys,
   std::vector<std::string> quantity_keys;
   std::set<std::string> seen;
   for (const CampaignRow& row : rows)
-    for (const auto& [k, v] : row.quantities)
+    for (const auto& [k, v] : row.summary.quantities)
       if (seen.insert(k).second) quantity_keys.push_back(k);
 
   std::string csv = "id";
   for (const std::string& k : parameter_keys)
     csv += "," + csv_field(k);
-  csv += ",status";
+  csv += ",status,softgrain,unmeasured,warnings";
   for (const std::string& k : quantity_keys)
     csv += "," + csv_field(k);
   csv += "\n";
@@ -82,7 +96,8 @@ std::string campaign_table_csv(const std::vector<std::string>& parameter_keys,
     csv += csv_field(row.id);
     for (const std::string& v : row.values)
       csv += "," + csv_field(v);
-    csv += "," + row.status;
+    csv += "," + row.status + "," + csv_field(row.summary.software) + "," +
+           csv_field(row.summary.unmeasured) + "," + csv_field(row.summary.warnings);
     for (const std::string& k : quantity_keys)
       csv += "," + csv_number(row_quantity(row, k));
     csv += "\n";

@@ -11,6 +11,7 @@
 #include "campaign/campaign_table.h"
 #include "campaign/run_queue.h"
 #include "core/error.h"
+#include "core/exit_status.h"
 #include "io/atomic_file.h"
 #include "scenario/scenario.h"
 
@@ -82,7 +83,7 @@ const char* state_name(RunState s) {
 
 CampaignRow make_row(const CampaignRun& run, const fs::path& dir, RunState state) {
   CampaignRow row{run.id, run.values, state_name(state), {}};
-  if (state == RunState::done) row.quantities = read_summary_quantities(dir / kSummary);
+  if (state == RunState::done) row.summary = read_summary_record(dir / kSummary);
   return row;
 }
 
@@ -221,6 +222,16 @@ struct CampaignProgress {
   std::size_t count(RunState s) const {
     return static_cast<std::size_t>(std::count(states.begin(), states.end(), s));
   }
+  // Done, but the analysis could not measure what the run asks for (mu).
+  bool unmeasured(std::size_t i) const {
+    return states[i] == RunState::done && !rows[i].summary.unmeasured.empty();
+  }
+  std::size_t count_unmeasured() const {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < states.size(); ++i)
+      n += unmeasured(i) ? 1 : 0;
+    return n;
+  }
 };
 
 CampaignProgress read_progress(const CampaignDef& campaign, const fs::path& folder) {
@@ -241,6 +252,7 @@ void count_states(const CampaignProgress& progress, SweepResult& result) {
   result.done = progress.count(RunState::done);
   result.failed = progress.count(RunState::failed);
   result.pending = progress.count(RunState::pending);
+  result.done_without_mu = progress.count_unmeasured();
 }
 
 void list_runs(const CampaignDef& campaign, const fs::path& folder,
@@ -336,6 +348,8 @@ bool run_jobs(const CampaignDef& campaign, const fs::path& folder, CampaignProgr
   const auto status = [&](std::size_t running) {
     std::ostringstream s;
     s << "[" << progress.count(RunState::done) << "/" << campaign.runs.size() << " done";
+    if (const std::size_t without = progress.count_unmeasured())
+      s << " (" << without << " without mu)";
     const std::size_t failed = progress.count(RunState::failed);
     if (failed) s << ", " << failed << " failed";
     s << ", " << running << " running]";
@@ -354,11 +368,21 @@ bool run_jobs(const CampaignDef& campaign, const fs::path& folder, CampaignProgr
     const CampaignRun& run = campaign.runs[i];
     const fs::path dir = campaign_run_folder(folder, run);
     std::string message;
-    if (o.success && fs::exists(dir / kSummary)) {
+    // `analyze` exits with kExitUnmeasured when it wrote the summary without mu: done, but
+    // not as a success (core/exit_status.h).
+    const bool analyzed_without_mu =
+        !o.success && o.step + 1 == jobs.jobs[o.job].steps.size() && o.exit_code == kExitUnmeasured;
+    if ((o.success || analyzed_without_mu) && fs::exists(dir / kSummary)) {
       progress.states[i] = RunState::done;
       progress.rows[i] = make_row(run, dir, RunState::done);
       message =
           "finished in " + format_seconds(o.seconds) + " (" + format_mu(progress.rows[i]) + ")";
+      if (progress.unmeasured(i)) {
+        // "mu: <reason>": named by what is missing (mu, or a compaction box's curve).
+        const std::string& what = progress.rows[i].summary.unmeasured;
+        message = "finished WITHOUT " + what.substr(0, what.find(':')) + " in " +
+                  format_seconds(o.seconds) + ": " + what;
+      }
     } else {
       progress.states[i] = RunState::failed;
       progress.rows[i] = make_row(run, dir, RunState::failed);
@@ -375,11 +399,21 @@ bool run_jobs(const CampaignDef& campaign, const fs::path& folder, CampaignProgr
 void report_gathered(const CampaignDef& campaign, const fs::path& folder,
                      const CampaignProgress& progress, const SweepResult& result,
                      std::ostream& out) {
-  out << "campaign '" << campaign.name << "': " << result.done << " of " << result.runs
-      << " runs done";
+  out << "campaign '" << campaign.name << "': " << result.done - result.done_without_mu << " of "
+      << result.runs << " runs done";
+  if (result.done_without_mu) out << ", " << result.done_without_mu << " done without mu";
   if (result.failed) out << ", " << result.failed << " failed";
   if (result.pending) out << ", " << result.pending << " not run";
   out << "\ntable: " << result.table.string() << "\n";
+  for (std::size_t i = 0; i < campaign.runs.size(); ++i)
+    if (progress.unmeasured(i))
+      out << "  done without mu: " << campaign.runs[i].id << ": "
+          << progress.rows[i].summary.unmeasured << "\n";
+  // Runs whose window failed a steadiness check: their averages are suspect.
+  for (std::size_t i = 0; i < campaign.runs.size(); ++i)
+    if (progress.states[i] == RunState::done && !progress.rows[i].summary.warnings.empty())
+      out << "  warnings: " << campaign.runs[i].id << ": " << progress.rows[i].summary.warnings
+          << " (" << kSummary << ")\n";
   for (std::size_t i = 0; i < campaign.runs.size(); ++i)
     if (progress.states[i] == RunState::failed)
       out << "  failed: " << campaign.runs[i].id << ": "

@@ -45,6 +45,9 @@ struct SweepResult {
   std::filesystem::path folder;  // the campaign folder
   std::filesystem::path table;   // campaign.csv
   std::size_t runs = 0, done = 0, failed = 0, pending = 0;
+  // Of the done runs, those whose analysis could not measure what the run asks for (mu of a
+  // shear cell): `analyze` exited with kExitUnmeasured, summary.json says why.
+  std::size_t done_without_mu = 0;
   bool interrupted = false;
 };
 

@@ -1,5 +1,7 @@
 #include "render/run_folder.h"
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 
 #include "core/error.h"
@@ -65,6 +67,25 @@ void grain_material_parameters(const ScenarioDef& s, RunInfo& info) {
       // c = sigma_c (papers 001/002 take sigma_c = tau_c = c); 0 for a law without cohesion.
       info.parameters.cohesion =
           law.params.kind == ContactLawKind::cohesive ? law.params.adhesion : 0.0;
+}
+
+// As scenario/shear_cell.cpp builds the cell: the load or the closing ends at the compaction
+// time; deformable first bodies switch from closing to sliding over a ramp centred on it, of
+// the strip's fundamental shear period 4 H / c_s (at most the compaction time); a drive given
+// in the scenario ends its history at its last point.
+double shear_cell_loading_end(const ScenarioDef& s) {
+  const ShearCellDef& c = *s.shear_cell;
+  double end = c.compaction_time;
+  if (c.first_bodies == FirstBodyKind::deformable)
+    for (const MaterialDef& m : s.materials)
+      if (m.name == c.first_body_material && m.density > 0.0) {
+        const double shear_speed = std::sqrt(m.young / (2.0 * (1.0 + m.poisson) * m.density));
+        end += 0.5 * std::min(4.0 * c.first_body_thickness / shear_speed, c.compaction_time);
+      }
+  for (const DriveDef* drive : {&c.top_drive, &c.bottom_drive})
+    for (const auto& axis : drive->axis)
+      if (axis && !axis->history.times.empty()) end = std::max(end, axis->history.times.back());
+  return end;
 }
 
 }  // namespace
@@ -137,6 +158,7 @@ RunInfo read_run_info(const std::filesystem::path& run_dir) {
     info.compaction_box = g;
   }
   if (s.shear_cell) {
+    info.loading_end = shear_cell_loading_end(s);
     info.periodic = std::make_pair(0.0, s.shear_cell->length);
     info.parameters.length = s.shear_cell->length;
     info.parameters.velocity = s.shear_cell->velocity;

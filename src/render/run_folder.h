@@ -28,6 +28,11 @@ struct RunInfo {
   std::vector<std::string> notes;  // parameters it cannot give, and why
   std::optional<std::pair<double, double>> periodic;  // [x_min, x_max) if periodic in x
   bool shear_cell = false;
+  // The end of what the scenario drives on purpose before a steady state can start (time):
+  // the shear cell's compaction or load ramp (compaction_time; with deformable first bodies
+  // also the half of the back faces' velocity ramp after it) and the last breakpoint of a
+  // history given to the top's or the bottom's drive. NaN: nothing known.
+  double loading_end = RunParameters::kUnknown;
   // Body names in the order build_model creates them: explicit grains, the shear cell
   // ("bottom", "top", "grain_0" ...), then walls.
   std::vector<std::string> body_names;

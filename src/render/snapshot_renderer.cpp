@@ -15,9 +15,12 @@
 #include "analysis/velocity_grid.h"
 #include "core/error.h"
 #include "core/file_name.h"
+#include "core/version.h"
+#include "io/atomic_file.h"
 #include "render/coherence_frames.h"
 #include "render/colormap.h"
 #include "render/contact_outlines.h"
+#include "render/png_text.h"
 
 namespace sg {
 namespace {
@@ -527,16 +530,45 @@ void write_png(const Layout& l, const Style& s, const Frame& f, const fs::path& 
   draw_decorations(cr, l, s, f);
   cairo_destroy(cr);
   cairo_surface_flush(surface);
-  // Atomic: a reader never sees half a picture.
-  const fs::path tmp = path.string() + ".tmp";
-  const cairo_status_t status = cairo_surface_write_to_png(surface, tmp.c_str());
+  // To memory first, to add the version of softgrain that drew it (render/png_text.h); then
+  // atomically: a reader never sees half a picture.
+  std::string png;
+  const cairo_status_t status = cairo_surface_write_to_png_stream(
+      surface,
+      [](void* closure, const unsigned char* data, unsigned int length) {
+        static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+        return CAIRO_STATUS_SUCCESS;
+      },
+      &png);
   cairo_surface_destroy(surface);
   SG_VERIFY(status == CAIRO_STATUS_SUCCESS,
-            "cannot write '" << tmp.string() << "': " << cairo_status_to_string(status));
-  fs::rename(tmp, path);
+            "cannot write '" << path.string() << "': " << cairo_status_to_string(status));
+  write_file_atomically(path, with_png_text(png, "Software", softgrain_version_line()));
 }
 
 }  // namespace
+
+const std::vector<std::string>& render_field_choices() {
+  static const std::vector<std::string> choices = {"von_mises",
+                                                   "velocity",
+                                                   "velocity_x",
+                                                   "velocity_y",
+                                                   "body",
+                                                   "coherence",
+                                                   "green_lagrange_norm",
+                                                   "strain_rate",
+                                                   "strain_rate_instant",
+                                                   "pressure",
+                                                   "sigma_xx",
+                                                   "sigma_yy",
+                                                   "sigma_xy",
+                                                   "displacement",
+                                                   "displacement_x",
+                                                   "displacement_y",
+                                                   "body_id",
+                                                   "material_id"};
+  return choices;
+}
 
 bool field_defined_on_rigid(const std::string& field) {
   return field.rfind("velocity", 0) == 0 || field.rfind("displacement", 0) == 0 ||

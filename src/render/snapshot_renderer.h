@@ -68,6 +68,10 @@ struct RenderResult {
   std::string note;             // why there is no movie, etc.
 };
 
+// The fields `softgrain render --field` draws: the point arrays of our .vtu snapshots
+// (io/vtk_writer.h; a vector array also by component, _x and _y), "body" and "coherence".
+const std::vector<std::string>& render_field_choices();
+
 // True for fields that are defined on rigid bodies too (velocity, displacement, body,
 // coherence).
 bool field_defined_on_rigid(const std::string& field);

@@ -15,7 +15,8 @@
 //
 // Writes RUN_DIR/analysis/summary.json (analysis/summary.h layout, plus "parameters": each
 // run parameter with its value and where it came from, "agglomerates": how they were
-// detected, and "notes": what could not be computed and why), RUN_DIR/analysis/profiles.csv,
+// detected, "unmeasured": what the run asks for and could not be measured, with the reason,
+// and "notes": what could not be computed and why), RUN_DIR/analysis/profiles.csv,
 // agglomerates.csv (one row per structure) and agglomerate_pdfs.csv, and for a compaction
 // box analysis/compaction.csv (its scalars compaction_* join summary.json's quantities, and
 // "compaction" says where A(t) came from), all atomically.
@@ -56,6 +57,7 @@ struct AnalyzeOptions {
   bool agglomerates = true;
   double coherence_threshold = 0.8;  // |C| > threshold marks a structure (paper 002: 0.8)
   AttThresholds att;                 // shares of the velocity jump (paper 003: 0.2, 0.8)
+  SteadinessThresholds steadiness;   // when the window's checks warn (analysis/steadiness.h)
 };
 
 struct ParameterSource {
@@ -65,8 +67,18 @@ struct ParameterSource {
   std::string source;  // "option", "scenario ...", "grains/*.csv", "unknown"
 };
 
+// A quantity the run's kind asks for that could not be measured: mu of a shear cell (the
+// driven bodies "top" and "bottom"), the compaction curve of a compaction box.
+struct Unmeasured {
+  std::string quantity;  // "mu", "compaction curve"
+  std::string reason;
+};
+
 struct AnalyzeResult {
   AnalysisSummary summary;
+  // Not empty: `analyze` exits with kExitUnmeasured (core/exit_status.h), summary.json lists
+  // them under "unmeasured", `sweep` reports the run as done without them.
+  std::vector<Unmeasured> unmeasured;
   RunParameters parameters;
   std::vector<ParameterSource> parameter_sources;
   std::vector<std::string> notes;  // what was not computed and why; choices made

@@ -42,6 +42,7 @@ void analyze_compaction(AnalyzeResult& r, const Series& series, const Compaction
     r.compaction.reset();
     r.compaction_path.clear();
     r.notes.push_back(std::string("compaction curve not computed: ") + e.what());
+    r.unmeasured.push_back({"compaction curve", e.what()});
   }
 }
 

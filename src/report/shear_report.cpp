@@ -4,6 +4,7 @@
 #include "analysis/driven_body.h"
 #include "analysis/energy_budget.h"
 #include "analysis/friction.h"
+#include "analysis/steadiness.h"
 #include "analysis/steady_state.h"
 #include "core/error.h"
 #include "report/analyze_steps.h"
@@ -35,20 +36,42 @@ std::vector<DrivenBody> shear_cell_columns(const Series& series, std::vector<std
   return bodies;
 }
 
-// The given window, else MSER on the driven bodies' forces, else the whole run.
+TimeWindow whole_run(const Series& series) {
+  TimeWindow window;
+  window.first = 0;
+  window.last = series.size() - 1;
+  window.t_begin = series.column("time")[0];
+  window.t_end = series.column("time")[series.size() - 1];
+  window.detected = false;
+  return window;
+}
+
+// The given window, else MSER on the driven bodies' forces after the compaction or load ramp,
+// else the whole run. A steady state that cannot be detected (too few rows after the ramp)
+// leaves the whole run as window, for what needs none, and its reason in `no_steady_state`.
 TimeWindow choose_window(const Series& series, std::span<const DrivenBody> bodies,
-                         const AnalyzeOptions& options, std::vector<std::string>& notes) {
+                         const AnalyzeOptions& options, double loading_end,
+                         std::vector<std::string>& notes, std::string& no_steady_state) {
   TimeWindow window;
   if (options.window) {
     window = window_from_times(series, options.window->first, options.window->second);
+    if (window.t_begin < loading_end)
+      notes.push_back("window: the given window starts at " + number(window.t_begin) +
+                      ", inside the compaction or load ramp (which ends at " + number(loading_end) +
+                      ")");
   } else if (!bodies.empty()) {
-    window = detect_steady_window(series, bodies);
+    try {
+      window = detect_steady_window(series, bodies, 5, loading_end);
+      if (std::isfinite(loading_end))
+        notes.push_back("window: detected after the compaction or load ramp (t >= " +
+                        number(loading_end) + ")");
+    } catch (const Error& e) {
+      no_steady_state = std::string("no steady-state window: ") + e.what();
+      notes.push_back(no_steady_state + "; the whole run is the window of what needs none");
+      window = whole_run(series);
+    }
   } else {
-    window.first = 0;
-    window.last = series.size() - 1;
-    window.t_begin = series.column("time")[0];
-    window.t_end = series.column("time")[series.size() - 1];
-    window.detected = false;
+    window = whole_run(series);
     notes.push_back(
         "window: the whole run (no driven shear-cell body to detect a steady state "
         "on; pass --window T0 T1)");
@@ -84,18 +107,27 @@ void analyze_shear(AnalyzeResult& r, const Series& series, const RunInfo& run,
   std::vector<std::string>& notes = r.notes;
   const std::vector<DrivenBody> bodies = shear_cell_columns(series, notes);
   AnalysisSummary& s = r.summary;
-  s.window = choose_window(series, bodies, options, notes);
+  std::string no_steady_state;
+  s.window = choose_window(series, bodies, options, run.loading_end, notes, no_steady_state);
   measure_gap(r, series, run, run_dir);
   s.friction.mean = unknown_friction("mean");
-  if (!bodies.empty()) {
+  std::string why_no_mu = "series.csv has no 'top' and 'bottom' columns";
+  if (!no_steady_state.empty()) {
+    why_no_mu = no_steady_state;  // a friction coefficient is a steady state's
+  } else if (!bodies.empty()) {
     try {
       s.friction = compute_friction(series, bodies, s.window, r.parameters.length);
+      why_no_mu = "mu is not finite";
     } catch (const Error& e) {
       notes.push_back(std::string("friction not computed: ") + e.what());
+      why_no_mu = e.what();
       s.friction.bodies.clear();
       s.friction.mean = unknown_friction("mean");
     }
   }
+  // A shear cell is run to measure its friction: failing to is not a success.
+  if ((run.shear_cell || !bodies.empty()) && !std::isfinite(s.friction.mean.mu))
+    r.unmeasured.push_back({"mu", why_no_mu});
   s.dimensionless = compute_dimensionless(r.parameters, s.friction.mean.normal_stress);
   note_dimensionless_gaps(r, notes);
   try {
@@ -104,6 +136,9 @@ void analyze_shear(AnalyzeResult& r, const Series& series, const RunInfo& run,
   } catch (const Error& e) {
     notes.push_back(std::string("energy budget not computed: ") + e.what());
   }
+  if (!bodies.empty() && std::isfinite(s.friction.mean.mu))
+    s.warnings = check_steadiness(series, s.window, bodies, s.friction, s.energy,
+                                  r.parameters.velocity, options.steadiness);
 }
 
 }  // namespace sg::report

@@ -75,6 +75,10 @@ std::string summary_document(const AnalyzeResult& r, const fs::path& run_dir) {
     c["grain_area_source"] = r.compaction->area_source;
     doc["compaction"] = std::move(c);
   }
+  nlohmann::ordered_json unmeasured = nlohmann::ordered_json::array();
+  for (const Unmeasured& u : r.unmeasured)
+    unmeasured.push_back({{"quantity", u.quantity}, {"reason", u.reason}});
+  doc["unmeasured"] = std::move(unmeasured);
   doc["notes"] = r.notes;
   return doc.dump(2) + "\n";
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -46,31 +47,98 @@ std::string describe_shares(const StepProfile& profile) {
   return s.str();
 }
 
-ProgressOutput::ProgressOutput(RunContext& context, std::ostream* out, bool show_profile)
-    : context_(context), out_(out), show_profile_(show_profile) {}
-
-void ProgressOutput::begin(bool) {
-  start_ = last_line_ = clock::now();
-  first_step_ = context_.simulation.solver.state().step;
-  first_time_ = context_.simulation.solver.state().time;
+void RecentRate::add(double wall_seconds, double time, long step) {
+  samples_.push_back({wall_seconds, time, step});
+  while (samples_.size() > 2 && samples_.back().wall - samples_[1].wall >= horizon_)
+    samples_.pop_front();
 }
 
-void ProgressOutput::after_step(const StepTaken& step) {
-  if (!out_ || clock::now() - last_line_ <= std::chrono::seconds(1)) return;
-  last_line_ = clock::now();
+double RecentRate::time_per_second() const {
+  if (samples_.size() < 2) return 0.0;
+  const double wall = samples_.back().wall - samples_.front().wall;
+  return wall > 0.0 ? (samples_.back().time - samples_.front().time) / wall : 0.0;
+}
+
+double RecentRate::steps_per_second() const {
+  if (samples_.size() < 2) return 0.0;
+  const double wall = samples_.back().wall - samples_.front().wall;
+  return wall > 0.0 ? static_cast<double>(samples_.back().step - samples_.front().step) / wall
+                    : 0.0;
+}
+
+double RecentRate::seconds_left(double duration) const {
+  const double rate = time_per_second();
+  if (samples_.empty() || !(rate > 0.0)) return std::numeric_limits<double>::infinity();
+  return std::max(0.0, duration - samples_.back().time) / rate;
+}
+
+void ProgressSchedule::start(double share, double wall) {
+  // The first line at the first multiple of the step beyond where the run starts.
+  next_share_ = (std::floor(share / share_step_ + 1e-9) + 1.0) * share_step_;
+  last_wall_ = wall;
+}
+
+bool ProgressSchedule::due(double share, double wall) {
+  // 1e-9: a share that reaches a mark up to round-off (t = 0.1 of 1 for 10%) counts as there.
+  if (share + 1e-9 < next_share_ && wall - last_wall_ < period_) return false;
+  while (next_share_ <= share + 1e-9)
+    next_share_ += share_step_;
+  last_wall_ = wall;
+  return true;
+}
+
+ProgressOutput::ProgressOutput(RunContext& context, std::ostream* out, bool show_profile,
+                               bool terminal)
+    : context_(context), out_(out), show_profile_(show_profile), terminal_(terminal) {}
+
+double ProgressOutput::wall_seconds() const {
+  return std::chrono::duration<double>(clock::now() - start_).count();
+}
+
+void ProgressOutput::begin(bool) {
+  start_ = clock::now();
+  last_sample_ = 0.0;
+  const SolverState& state = context_.simulation.solver.state();
+  rate_.add(0.0, state.time, state.step);
+  schedule_.start(state.time / context_.scenario.duration, 0.0);
+}
+
+std::string ProgressOutput::describe() const {
   const SolverState& state = context_.simulation.solver.state();
   const double duration = context_.scenario.duration;
-  const double elapsed = std::chrono::duration<double>(last_line_ - start_).count();
-  const double rate = static_cast<double>(step.start.step + 1 - first_step_) / elapsed;
-  const double time_rate = (state.time - first_time_) / elapsed;
   std::ostringstream line;
-  line << "\r  t = " << std::setprecision(4) << state.time << " / " << duration << "  ("
-       << std::fixed << std::setprecision(1) << 100.0 * state.time / duration << "%)  "
-       << std::setprecision(0) << rate << " steps/s  ETA "
-       << format_duration((duration - state.time) / time_rate) << "   ";
+  line << "  t = " << std::setprecision(4) << state.time << " / " << duration << "  (" << std::fixed
+       << std::setprecision(1) << 100.0 * state.time / duration << "%)  " << std::setprecision(0)
+       << rate_.steps_per_second() << " steps/s  ETA "
+       << format_duration(rate_.seconds_left(duration));
+  return line.str();
+}
+
+void ProgressOutput::after_step(const StepTaken&) {
+  if (!out_) return;
+  const double wall = wall_seconds();
+  const SolverState& state = context_.simulation.solver.state();
+  if (terminal_) {
+    if (wall - last_sample_ <= 1.0) return;
+    last_sample_ = wall;
+    rate_.add(wall, state.time, state.step);
+    std::string line = "\r" + describe() + "   ";
+    if (show_profile_)
+      line += "\n  profile: " + describe_shares(context_.simulation.solver.profile()) + "\n";
+    *out_ << line << std::flush;
+    return;
+  }
+  // Plain lines: the rate is sampled once a second as on a terminal, lines as scheduled.
+  if (wall - last_sample_ > 1.0) {
+    last_sample_ = wall;
+    rate_.add(wall, state.time, state.step);
+  }
+  if (!schedule_.due(state.time / context_.scenario.duration, wall)) return;
+  rate_.add(wall, state.time, state.step);
+  std::string line = describe() + "\n";
   if (show_profile_)
-    line << "\n  profile: " << describe_shares(context_.simulation.solver.profile()) << "\n";
-  *out_ << line.str() << std::flush;
+    line += "  profile: " + describe_shares(context_.simulation.solver.profile()) + "\n";
+  *out_ << line << std::flush;
 }
 
 }  // namespace sg

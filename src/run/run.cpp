@@ -65,20 +65,23 @@ void announce_start(std::ostream& out, const Simulation& sim, bool resumed) {
       << (resumed ? "; resumed at step " + std::to_string(sim.solver.state().step) : "") << "\n";
 }
 
-void announce_end(std::ostream& out, const Simulation& sim, const RunSummary& summary,
-                  const SeriesOutput& series, double duration) {
+void announce_end(std::ostream& out, bool terminal, const Simulation& sim,
+                  const RunSummary& summary, const SeriesOutput& series, double duration) {
   const StepStatistics& st = sim.controller.statistics();
+  // On a terminal the progress line is still there, without its line break: overwrite it.
+  const std::string clear_line = terminal ? "\r" + std::string(70, ' ') + "\r" : "";
   if (st.rejected > 0 || st.dt_min != st.dt_max)
-    out << "\r  step control: " << st.accepted << " steps accepted, " << st.rejected
+    out << clear_line << "  step control: " << st.accepted << " steps accepted, " << st.rejected
         << " rejected, dt in [" << st.dt_min << ", " << st.dt_max << "]\n";
   if (!summary.completed) return;
   const EnergyLedger& e = sim.solver.state().energy;
-  out << std::defaultfloat << "\r" << std::string(70, ' ') << "\rdone: " << sim.solver.state().step
-      << " steps in " << format_duration(summary.wall_seconds) << "; outputs in "
-      << summary.directory.string() << "\n  energy: kinetic " << e.kinetic << ", elastic "
-      << e.elastic << ", external work " << e.external_work << ", damping dissipated "
-      << e.damping_dissipated << ", contact dissipated " << e.contact_dissipated
-      << ", balance residual " << e.residual() << "\n";
+  out << std::defaultfloat << (st.rejected > 0 || st.dt_min != st.dt_max ? "" : clear_line)
+      << "done: " << sim.solver.state().step << " steps in "
+      << format_duration(summary.wall_seconds) << "; outputs in " << summary.directory.string()
+      << "\n  energy: kinetic " << e.kinetic << ", elastic " << e.elastic << ", external work "
+      << e.external_work << ", damping dissipated " << e.damping_dissipated
+      << ", contact dissipated " << e.contact_dissipated << ", balance residual " << e.residual()
+      << "\n";
   double mu = 0.0, normal_force = 0.0;
   if (series.top_friction(mu, normal_force))
     out << "  friction coefficient on the top body over t > " << 0.5 * duration
@@ -100,7 +103,7 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
   SnapshotOutput snapshots(context);
   SeriesOutput series(context);
   CheckpointOutput checkpoints(context);
-  ProgressOutput progress(context, options.progress, options.profile);
+  ProgressOutput progress(context, options.progress, options.profile, options.progress_on_terminal);
   std::vector<RunObserver*> outputs = {&snapshots, &series, &checkpoints, &progress};
   outputs.insert(outputs.end(), options.observers.begin(), options.observers.end());
 
@@ -163,7 +166,9 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
                 resume_note + describe_step_control(sim.controller.statistics()) +
                     describe_viscous_solves(sim.solver.viscous_statistics()) +
                     describe_profile(profile, summary.wall_seconds));
-  if (options.progress) announce_end(*options.progress, sim, summary, series, scenario.duration);
+  if (options.progress)
+    announce_end(*options.progress, options.progress_on_terminal, sim, summary, series,
+                 scenario.duration);
   return summary;
 }
 

@@ -11,7 +11,7 @@
 // rows written when the checkpoint was taken, restores the .pvd indexes to the snapshots
 // taken by then, and continues: the finished folder is byte-identical to that of a run that
 // never stopped (tests/io/test_checkpoint_restart.cpp).
-// A progress line (simulated time, steps/s, ETA) goes to `progress` when it is set.
+// The progress (simulated time, steps/s, ETA) goes to `progress` when it is set.
 #include <filesystem>
 #include <ostream>
 #include <vector>
@@ -25,6 +25,9 @@ class RunObserver;  // run/run_observer.h
 
 struct RunOptions {
   std::ostream* progress = nullptr;  // progress line and summary; nullptr: silent
+  // `progress` is a terminal: the progress line is rewritten in place; otherwise plain lines
+  // at a modest rate (run/progress_output.h).
+  bool progress_on_terminal = false;
   std::filesystem::path
       output_root_override;  // non-empty: replaces the scenario's [output] directory
   bool resume = false;       // continue the run folder from its checkpoint.bin

@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "core/version.h"
 #include "io/atomic_file.h"
 #include "model/force_kernel.h"
 
@@ -13,7 +14,8 @@ namespace sg {
 namespace {
 
 void write_parameters(std::ostream& out, const ScenarioDef& s) {
-  out << "softgrain run log\nscenario = " << s.source.string() << "\nname = " << s.name
+  out << "softgrain run log\nsoftgrain = \"" << softgrain_version() << "\"\ncommit = \""
+      << softgrain_commit() << "\"\nscenario = " << s.source.string() << "\nname = " << s.name
       << "\nthreads = " << omp_get_max_threads() << "\nforce_kernel = \"" << force_kernel().isa
       << "\"\n\n[time]\nduration = " << s.duration << "\nsafety = " << s.time_step_safety
       << "\nfixed_step = " << s.fixed_time_step << "\nmass_scaling_step = " << s.mass_scaling_step

@@ -1,7 +1,8 @@
 #pragma once
-// run.log: every parameter as resolved, the discretization, the first step, the mass
-// scaling, the resume point; rewritten (atomically) at the end with the step control's
-// record and the profile of the run's phases. render/ reads the scenario's path from it.
+// run.log: the softgrain version and commit (core/version.h), every parameter as resolved,
+// the discretization, the first step, the mass scaling, the resume point; rewritten (atomically) at
+// the end with the step control's record and the profile of the run's phases. render/ reads the
+// scenario's path from it.
 #include <filesystem>
 #include <string>
 

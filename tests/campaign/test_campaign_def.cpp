@@ -210,13 +210,31 @@ TEST(CampaignTable, ReadsSummariesAndRefusesOtherVersions) {
     "version": 2, "quantities": {}})");
   EXPECT_THROW(read_summary_quantities(v2), Error);
 
-  const std::vector<CampaignRow> rows = {
-      {"run-000_name=a,b", {"'a,b'"}, "done", {{"mu", 0.5}, {"mu_std", q[1].second}}},
-      {"run-001_name=c", {"'c'"}, "pending", {}}};
+  // A summary of this softgrain: what analysed it and what it could not measure.
+  const fs::path recorded = write("summary3.json", R"({"format": "softgrain-analysis-summary",
+    "version": 1, "softgrain": {"version": "0.1.0", "commit": "0123456789ab-dirty"},
+    "quantities": {"mu": {"value": null}},
+    "unmeasured": [{"quantity": "mu", "reason": "normal force 0, at t = 0"}],
+    "warnings": [{"check": "mu_trend", "message": "m"}, {"check": "kinetic_drift", "message": "k"}]})");
+  const SummaryRecord record = read_summary_record(recorded);
+  EXPECT_EQ(record.software, "0.1.0 0123456789ab-dirty");
+  EXPECT_EQ(record.unmeasured, "mu: normal force 0, at t = 0");
+  EXPECT_EQ(record.warnings, "mu_trend; kinetic_drift");
+  EXPECT_EQ(read_summary_record(good).software, "");  // written before softgrain said
+  EXPECT_EQ(read_summary_record(good).unmeasured, "");
+
+  SummaryRecord done;
+  done.quantities = {{"mu", 0.5}, {"mu_std", q[1].second}};
+  done.software = "0.1.0 0123456789ab";
+  const std::vector<CampaignRow> rows = {{"run-000_name=a,b", {"'a,b'"}, "done", done},
+                                         {"run-001_name=c", {"'c'"}, "done", record},
+                                         {"run-002_name=d", {"'d'"}, "pending", {}}};
   EXPECT_EQ(campaign_table_csv({"materials.0.name"}, rows),
-            "id,materials.0.name,status,mu,mu_std\n"
-            "\"run-000_name=a,b\",\"'a,b'\",done,0.5,\n"
-            "run-001_name=c,'c',pending,,\n");
+            "id,materials.0.name,status,softgrain,unmeasured,warnings,mu,mu_std\n"
+            "\"run-000_name=a,b\",\"'a,b'\",done,0.1.0 0123456789ab,,,0.5,\n"
+            "run-001_name=c,'c',done,0.1.0 0123456789ab-dirty,\"mu: normal force 0, at t = "
+            "0\",mu_trend; kinetic_drift,,\n"
+            "run-002_name=d,'d',pending,,,,,\n");
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
 #include <sstream>
@@ -19,6 +20,7 @@
 
 #include "campaign/campaign_def.h"
 #include "core/error.h"
+#include "core/version.h"
 #include "scenes/scenario_files.h"
 #include "scenes/shear_cell_scenario.h"
 
@@ -176,9 +178,17 @@ viscosity_tilde = -1.5
   if (std::system("/usr/bin/python3 -c 'import matplotlib, scipy' >/dev/null 2>&1") != 0)
     GTEST_SKIP() << "/usr/bin/python3 without matplotlib and scipy: no figures to check";
   // Every campaign figure (scripts/plot_campaign.py --all): one map slice, alpha~ = -1.5.
+  // Each names the softgrain that analysed the runs (campaign.csv's `softgrain`) in its PNG
+  // text "Software" (matplotlib writes it as an uncompressed tEXt chunk).
+  const std::string build =
+      "softgrain " + std::string(softgrain_version()) + " " + std::string(softgrain_commit());
   for (const char* png : {"mu_map.png", "campaign_points.png", "mu_vs_stress.png",
-                          "maps_alpha=-1.5.png", "correlations.png"})
+                          "maps_alpha=-1.5.png", "correlations.png"}) {
     EXPECT_GT(fs::exists(folder / png) ? fs::file_size(folder / png) : 0u, 1000u) << png;
+    std::ifstream in(folder / png, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(bytes.find(std::string("Software") + '\0' + build), std::string::npos) << png;
+  }
   // The correlation table: every coefficient recomputed here on campaign.csv. A pair has
   // coefficients exactly when at least 3 runs have both quantities and neither is constant.
   const Table correlations = read_csv(folder / "correlations.csv");

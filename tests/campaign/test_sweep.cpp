@@ -8,16 +8,21 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "core/exit_status.h"
+#include "core/version.h"
 #include "scenes/scenario_files.h"
-
+#include "scenes/shear_cell_scenario.h"
 #include "scenes/tiny_scenario.h"
 
 namespace sg {
@@ -69,6 +74,17 @@ pid_t start_sweep(const fs::path& campaign, const fs::path& log) {
   return pid;
 }
 
+int wait_exit_code(pid_t pid);
+
+// `softgrain sweep <campaign> --gather --no-plot`, output to `log`; its exit status.
+int run_gather(const fs::path& campaign, const fs::path& log) {
+  const std::string command = std::string("'") + SOFTGRAIN_EXECUTABLE + "' sweep '" +
+                              campaign.string() + "' --gather --no-plot > '" + log.string() +
+                              "' 2>&1";
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
 int wait_exit_code(pid_t pid) {
   int status = 0;
   ::waitpid(pid, &status, 0);
@@ -109,12 +125,18 @@ void expect_complete_table(const fs::path& campaign_folder) {
   EXPECT_EQ(rows[0][1], "materials.0.young");
   EXPECT_EQ(rows[0][2], "contact_laws.0.friction");
   EXPECT_EQ(rows[0][3], "status");
+  EXPECT_EQ(rows[0][4], "softgrain");
+  EXPECT_EQ(rows[0][5], "unmeasured");
+  EXPECT_EQ(rows[0][6], "warnings");
   for (std::size_t r = 0; r < 4; ++r) {
     const auto& row = rows[r + 1];
     ASSERT_EQ(row.size(), rows[0].size()) << r;
     EXPECT_EQ(row[1], kExpected[r].first) << r;
     EXPECT_EQ(row[2], kExpected[r].second) << r;
     EXPECT_EQ(row[3], "done") << r;
+    // The build that analysed it; nothing unmeasured (not a shear cell: no mu asked for).
+    EXPECT_EQ(row[4], std::string(softgrain_version()) + " " + std::string(softgrain_commit()));
+    EXPECT_EQ(row[5], "") << r;
     // The row is the run's: its folder holds the scenario with these values.
     const std::string scenario = read(campaign_folder / "runs" / row[0] / "scenario.toml");
     EXPECT_NE(scenario.find("young = " + kExpected[r].first), std::string::npos) << row[0];
@@ -165,6 +187,102 @@ TEST(Sweep, KilledSweepResumesWithoutRedoingFinishedRuns) {
   EXPECT_NE(second.find("run-001_young=10_friction=0.4 finished"), std::string::npos) << second;
   EXPECT_NE(second.find("run-003_young=20_friction=0.4 finished"), std::string::npos) << second;
   expect_complete_table(folder);
+}
+
+// The cells of a line of campaign.csv, RFC 4180 quotes undone.
+std::vector<std::string> csv_cells(const std::string& line) {
+  std::vector<std::string> cells(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+      cells.back() += '"';
+      ++i;
+    } else if (c == '"') {
+      quoted = !quoted;
+    } else if (c == ',' && !quoted) {
+      cells.emplace_back();
+    } else {
+      cells.back() += c;
+    }
+  }
+  return cells;
+}
+
+// A campaign of two tiny pressure-loaded shear cells (the cell of test_paper_campaign.cpp):
+// under p = 1 the layer carries the load and mu is measured; under p = 0.01 the light top,
+// held back by its servo damping (terminal speed p L / c = 0.12), never reaches the layer in
+// 4 time units: the normal force is 0 over the window, mu cannot be measured, and the sweep
+// must say so (issue #29: such runs were reported "finished (mu = -)" and counted as done).
+TEST(Sweep, ARunWithoutMuIsReportedAndGatheredAsSuch) {
+  const fs::path dir = fresh_dir("without_mu");
+  scenes::CohesiveShearCell c;
+  c.duration = 4.0;
+  c.compaction_time = 0.4;
+  c.grains = 16;
+  c.extra_time = "integrator = \"imex\"";
+  std::string cell = scenes::shear_cell_scenario(c);
+  const std::string rigid = "name = \"first_body\"\nyoung = 1000.0\n";
+  cell.replace(cell.find(rigid), rigid.size(), rigid + "density = 0.1\n");
+  std::ofstream(dir / "cell.toml") << cell
+                                   << "normal_load = \"pressure\"\npressure = 1.0\n"
+                                      "servo_damping = 0.5\n";
+  std::ofstream(dir / "campaign.toml") << R"(name = "c"
+scenario = "cell.toml"
+output = "out"
+parallel = 2
+threads = 1
+analyze_options = ["--window", "2.5", "4", "--no-agglomerates", "--no-plots"]
+[grid]
+"shear_cell.pressure" = [1.0, 0.01]
+)";
+  const int code = wait_exit_code(start_sweep(dir / "campaign.toml", dir / "sweep.out"));
+  const std::string out = read(dir / "sweep.out");
+  EXPECT_EQ(code, kExitUnmeasured) << out;
+  const std::string loaded = "run-000_pressure=1", unloaded = "run-001_pressure=0.01";
+  EXPECT_NE(out.find(loaded + " finished in"), std::string::npos) << out;
+  EXPECT_NE(out.find(unloaded + " finished WITHOUT mu"), std::string::npos) << out;
+  EXPECT_NE(out.find("mean normal force 0 over the window is not positive"), std::string::npos)
+      << out;
+  EXPECT_NE(out.find("[2/2 done (1 without mu), 0 running]"), std::string::npos) << out;
+  EXPECT_NE(out.find("1 of 2 runs done, 1 done without mu"), std::string::npos) << out;
+  EXPECT_NE(out.find("  done without mu: " + unloaded + ": mu: "), std::string::npos) << out;
+
+  // The table marks it, and a --gather (as after cluster jobs) gives the same marks.
+  for (const char* pass : {"sweep", "gather"}) {
+    SCOPED_TRACE(pass);
+    if (std::string(pass) == "gather") {
+      const auto gather = run_gather(dir / "campaign.toml", dir / "gather.out");
+      EXPECT_EQ(gather, kExitUnmeasured) << read(dir / "gather.out");
+      EXPECT_NE(read(dir / "gather.out").find("1 of 2 runs done, 1 done without mu"),
+                std::string::npos)
+          << read(dir / "gather.out");
+    }
+    std::istringstream table(read(dir / "out" / "c" / "campaign.csv"));
+    std::string line;
+    std::getline(table, line);
+    const auto header = csv_cells(line);
+    const auto column = [&](const std::string& key) {
+      return static_cast<std::size_t>(std::find(header.begin(), header.end(), key) -
+                                      header.begin());
+    };
+    ASSERT_LT(column("unmeasured"), header.size()) << line;
+    ASSERT_LT(column("mu"), header.size()) << line;
+    std::map<std::string, std::vector<std::string>> rows;
+    while (std::getline(table, line)) {
+      const auto cells = csv_cells(line);
+      rows[cells[0]] = cells;
+    }
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_EQ(rows[loaded][column("status")], "done");
+    EXPECT_EQ(rows[loaded][column("unmeasured")], "");
+    EXPECT_GT(std::stod(rows[loaded][column("mu")]), 0.0);
+    EXPECT_EQ(rows[unloaded][column("status")], "done");
+    EXPECT_EQ(rows[unloaded][column("mu")], "");
+    EXPECT_EQ(rows[unloaded][column("unmeasured")].rfind("mu: ", 0), 0u)
+        << rows[unloaded][column("unmeasured")];
+    EXPECT_NE(rows[unloaded][column("unmeasured")].find("mean normal force 0"), std::string::npos);
+  }
 }
 
 }  // namespace

@@ -6,12 +6,14 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <sstream>
 
 #include "core/error.h"
+#include "core/version.h"
 #include "render/coherence_frames.h"
 #include "render/plot_runner.h"
 #include "render/snapshot_renderer.h"
@@ -341,6 +343,12 @@ TEST_F(TinyShear, PlotScriptDrawsValidPngs) {
     EXPECT_GT(fs::file_size(png), 1000u) << png;
     EXPECT_EQ(png_header_size(png), size) << png;
     EXPECT_FALSE(fs::exists(png.string() + ".tmp.png"));
+    // The PNG text "Software" names the softgrain of summary.json (matplotlib: a tEXt chunk).
+    std::ifstream in(png, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(bytes.find(std::string("Software") + '\0' + softgrain_version_line()),
+              std::string::npos)
+        << png;
   }
   // A folder that was never analysed: one line, non-zero status, nothing drawn.
   const fs::path empty = run_dir_.parent_path() / "not_analysed";
