@@ -171,3 +171,22 @@ def test_no_step_after_the_end(small_cell):
     sim.run()
     with pytest.raises(softgrain.Error, match="closed|duration"):
         sim.step()
+
+
+def test_rigid_force_views_are_the_series_first_body_forces(small_cell, tmp_path):
+    # After the step from t_n, rigid fx, fy hold the force evaluation of t_n: what series.csv's
+    # row at t_n reports for that body (written with 12 significant digits).
+    scenario = softgrain.Scenario.from_dict(copy.deepcopy(small_cell))
+    sim = softgrain.Simulation(scenario, threads=1, output=tmp_path)
+    top = list(sim.rigid["body"]).index(sim.bodies()["name"].index("top"))
+    fx, fy = sim.rigid["fx"], sim.rigid["fy"]
+    seen = {}
+    sim.run(callback=lambda s: seen.update({s.step_count - 1: (fx[top], fy[top])}))
+    series = softgrain.open_run(sim.directory).series
+    checked = 0
+    for row, step in enumerate(series["step"].astype(int)):
+        if step in seen:
+            np.testing.assert_allclose(seen[step], (series["top_fx"][row], series["top_fy"][row]),
+                                       rtol=1e-10, atol=1e-12)
+            checked += 1
+    assert checked == len(series["step"]) and np.any(series["top_fy"] != 0)
