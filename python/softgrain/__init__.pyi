@@ -7,6 +7,8 @@ from ._softgrain import ENERGY_FIELDS as ENERGY_FIELDS
 from ._softgrain import Scenario as Scenario
 from ._softgrain import Simulation as Simulation
 from ._softgrain import __version__ as __version__
+from .campaign import read_campaign as read_campaign
+from .campaign import run_scenarios as run_scenarios
 from .errors import Error as Error
 from .errors import ScenarioError as ScenarioError
 from .run_reader import Run as Run

@@ -121,3 +121,7 @@ class Simulation:
         """Physical node velocities (n, 2): a new array."""
     def bodies(self) -> Dict[str, Any]:
         """Per body (new arrays): name, rigid, x, y, vx, vy, theta."""
+
+def _run_process_queue(jobs: List[Any], parallel: int,
+                       on_finished: Optional[Callable[[Dict[str, Any]], None]] = None) -> Any:
+    """Runs jobs as child processes through the campaign's queue; (completed, outcomes)."""

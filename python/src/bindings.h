@@ -5,6 +5,7 @@
 //   bind_scenario.cpp    Scenario: from a file, a dict or TOML text; to_dict, to_toml, info
 //   bind_simulation.cpp  Simulation: a run stepped from Python (run/run_session.h), with
 //                        read-only zero-copy NumPy views of its state
+//   bind_campaign.cpp    the campaign's process queue (softgrain.run_scenarios)
 // The pure-Python part (softgrain/*.py) reads run folders and defines the exceptions.
 #include <pybind11/pybind11.h>
 
@@ -20,6 +21,7 @@ namespace py = pybind11;
 void bind_errors(py::module_& m);
 void bind_scenario(py::module_& m);
 void bind_simulation(py::module_& m);
+void bind_campaign(py::module_& m);
 
 // A scenario as the module holds it: the checked definition, and the same scenario as TOML
 // text (what to_toml() returns, and what a checkpoint written from Python keeps beside it).

@@ -9,4 +9,5 @@ PYBIND11_MODULE(_softgrain, m) {
   sg::python::bind_errors(m);
   sg::python::bind_scenario(m);
   sg::python::bind_simulation(m);
+  sg::python::bind_campaign(m);
 }
