@@ -87,6 +87,8 @@ class PySimulation {
                const std::optional<std::filesystem::path>& output, bool progress,
                const std::optional<std::filesystem::path>& resume)
       : scenario_(scenario), threads_(threads) {
+    SG_VERIFY(threads >= 0,
+              "Simulation: threads must be 0 (OpenMP's count) or more, got " << threads);
     RunOptions options;
     options.progress = progress ? &std::cerr : nullptr;
     options.write_outputs = output.has_value();

@@ -190,3 +190,8 @@ def test_rigid_force_views_are_the_series_first_body_forces(small_cell, tmp_path
                                        rtol=1e-10, atol=1e-12)
             checked += 1
     assert checked == len(series["step"]) and np.any(series["top_fy"] != 0)
+
+
+def test_a_negative_thread_count_is_refused(small_cell):
+    with pytest.raises(softgrain.Error, match="threads"):
+        softgrain.Simulation(softgrain.Scenario.from_dict(copy.deepcopy(small_cell)), threads=-1)
