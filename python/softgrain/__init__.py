@@ -22,6 +22,12 @@ from ._softgrain import ENERGY_FIELDS, Scenario, Simulation, __version__  # noqa
 from .campaign import read_campaign, run_scenarios  # noqa: E402
 from .errors import Error, ScenarioError  # noqa: E402
 from .run_reader import Run, RunReadError, open_run  # noqa: E402
+from .scenario_dict import from_dict as _from_dict  # noqa: E402
+from .scenario_dict import to_dict as _to_dict  # noqa: E402
+
+# The dict side of Scenario is Python's (softgrain/scenario_dict.py).
+Scenario.from_dict = staticmethod(_from_dict)
+Scenario.to_dict = _to_dict
 
 __all__ = [
     "ENERGY_FIELDS",

@@ -1,18 +1,13 @@
-// softgrain.Scenario: a checked scenario, read from a TOML file, built from a Python dict with
-// the file's keys, or from TOML text. The checks are the command line's own (load_scenario,
-// scenario/scenario.h): a dict is turned into a TOML table, written as TOML text and read as
-// a file would be, so that every rule and every message is the same, and an error's line is
-// a line of to_toml()'s text.
-//
-// The dict is kept as a toml++ table: to_dict() and to_toml() give it back (key order aside:
-// toml++ sorts keys), and from_dict(s.to_dict()) builds the same model (the tests compare
-// the checkpoint fingerprints of both, which hash every fixed datum of the model).
+// softgrain.Scenario: a checked scenario, read from a TOML file or TOML text with the command
+// line's own checks and messages (load_scenario, scenario/scenario.h), and the text it was
+// read from (to_toml()). The dict side (Scenario.from_dict, to_dict) is Python's
+// (softgrain/scenario_dict.py): a dict is written as TOML text and read here, so that every
+// rule and message is the same, and an error's line is a line of to_toml()'s text.
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
-#include <toml++/toml.h>
+#include <fstream>
 #include <sstream>
-#include <variant>
 
 #include "bindings.h"
 #include "model/force_kernel.h"
@@ -21,95 +16,6 @@
 namespace sg::python {
 
 namespace {
-
-// A TOML value made from a Python value (one type, so that the conversion is one recursive
-// function rather than a template instantiated per nesting level).
-using TomlValue = std::variant<bool, std::int64_t, double, std::string, toml::array, toml::table>;
-
-TomlValue toml_value(py::handle v, const std::string& key);
-
-template <class Container, class... Key>
-void put(Container& container, TomlValue value, const Key&... key) {
-  std::visit(
-      [&](auto&& x) {
-        if constexpr (sizeof...(Key) == 0)
-          container.push_back(std::move(x));
-        else
-          container.insert_or_assign(key..., std::move(x));
-      },
-      std::move(value));
-}
-
-toml::table table_from_dict(const py::dict& dict, const std::string& where) {
-  toml::table table;
-  for (auto [k, v] : dict) {
-    if (!py::isinstance<py::str>(k))
-      throw py::type_error("scenario keys are strings; got " + py::repr(k).cast<std::string>() +
-                           (where.empty() ? "" : " in '" + where + "'"));
-    const std::string key = k.cast<std::string>();
-    put(table, toml_value(v, where.empty() ? key : where + "." + key), key);
-  }
-  return table;
-}
-
-// The TOML value of the Python value `v` (at key `key`, for messages).
-TomlValue toml_value(py::handle v, const std::string& key) {
-  if (py::isinstance<py::bool_>(v)) return v.cast<bool>();
-  if (py::isinstance<py::int_>(v)) return v.cast<std::int64_t>();
-  if (py::isinstance<py::float_>(v)) return v.cast<double>();
-  if (py::isinstance<py::str>(v)) return v.cast<std::string>();
-  if (py::isinstance<py::dict>(v)) return table_from_dict(v.cast<py::dict>(), key);
-  if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v)) {
-    toml::array array;
-    std::size_t i = 0;
-    for (py::handle item : v)
-      put(array, toml_value(item, key + "[" + std::to_string(i++) + "]"));
-    return array;
-  }
-  if (py::hasattr(v, "__fspath__"))  // pathlib.Path for file keys
-    return py::module_::import("os").attr("fspath")(v).cast<std::string>();
-  if (py::hasattr(v, "tolist")) return toml_value(v.attr("tolist")(), key);  // NumPy values
-  throw py::type_error("scenario key '" + key + "': a " +
-                       py::str(py::type::of(v).attr("__name__")).cast<std::string>() +
-                       " cannot be written in TOML (numbers, strings, booleans, lists and "
-                       "dicts can)");
-}
-
-py::object to_python(const toml::node& node) {
-  switch (node.type()) {
-    case toml::node_type::table: {
-      py::dict dict;
-      for (auto&& [key, value] : *node.as_table())
-        dict[py::str(std::string(key.str()))] = to_python(value);
-      return dict;
-    }
-    case toml::node_type::array: {
-      py::list list;
-      for (const toml::node& item : *node.as_array())
-        list.append(to_python(item));
-      return list;
-    }
-    case toml::node_type::string:
-      return py::str(*node.value<std::string>());
-    case toml::node_type::integer:
-      return py::int_(*node.value<std::int64_t>());
-    case toml::node_type::floating_point:
-      return py::float_(*node.value<double>());
-    case toml::node_type::boolean:
-      return py::bool_(*node.value<bool>());
-    default: {  // dates and times: no scenario key takes one; kept as their text
-      std::ostringstream text;
-      node.visit([&](const auto& value) { text << value; });
-      return py::str(text.str());
-    }
-  }
-}
-
-std::string toml_text(const toml::table& table) {
-  std::ostringstream text;
-  text << toml::toml_formatter{table} << "\n";
-  return text.str();
-}
 
 // The file name a scenario built in memory carries in messages; relative file keys resolve
 // against its folder.
@@ -125,14 +31,11 @@ Scenario from_toml_text(const std::string& text,
 Scenario from_file(const std::filesystem::path& file) {
   Scenario s;
   s.def = load_scenario(file);  // every check and message of the command line
-  s.toml = toml_text(toml::parse_file(file.string()));
+  std::ifstream in(file);
+  std::ostringstream text;
+  text << in.rdbuf();
+  s.toml = text.str();
   return s;
-}
-
-Scenario from_dict(const py::dict& dict, const std::optional<std::filesystem::path>& base_dir) {
-  toml::table table = table_from_dict(dict, "");
-  if (!table.contains("name")) table.insert("name", "scenario");
-  return from_toml_text(toml_text(table), base_dir);
 }
 
 // What `softgrain info` prints (app/commands/info_command.cpp), as a dict; the model is built
@@ -183,24 +86,18 @@ void bind_scenario(py::module_& m) {
   py::class_<Scenario>(m, "Scenario", R"(A checked scenario (docs/scenario.md lists every key).
 
 Build one with Scenario.from_file(path), Scenario.from_dict(d) (the keys of the TOML file,
-nested dicts for tables, lists of dicts for arrays of tables) or Scenario.from_toml(text).
+nested dicts for tables, lists of dicts for arrays of tables) or Scenario.from_toml(text);
+to_dict() and to_toml() give it back.
 Errors raise softgrain.ScenarioError with file, line, key and detail.)")
       .def_static("from_file", &from_file, py::arg("path"),
                   "Reads and checks a scenario file, as `softgrain run` does.")
-      .def_static("from_dict", &from_dict, py::arg("d"), py::arg("base_dir") = py::none(),
-                  "A scenario from a dict with the keys of the TOML file. `name` defaults to "
-                  "'scenario'; relative file keys resolve against base_dir (default: the working "
-                  "folder). An error's line is a line of to_toml()'s text; its file is '<dict>'.")
       .def_static("from_toml", &from_toml_text, py::arg("text"), py::arg("base_dir") = py::none(),
-                  "A scenario from TOML text (as from_dict for names and relative files).")
-      .def(
-          "to_dict", [](const Scenario& s) { return to_python(toml::parse(s.toml)); },
-          "The scenario's keys as a dict (a new one each call: change it and pass it to "
-          "from_dict).")
+                  "A scenario from TOML text; relative file keys resolve against base_dir "
+                  "(default: the working folder); its file in messages is '<dict>'.")
       .def(
           "to_toml", [](const Scenario& s) { return s.toml; },
-          "The scenario as TOML text (keys sorted, comments dropped); from_toml of it builds "
-          "the same model.")
+          "The TOML text the scenario was read from: the file as written (comments kept), or "
+          "the text from_dict wrote; from_toml of it (with base_dir) builds the same model.")
       .def("info", &info,
            "What `softgrain info` prints, as a dict: bodies, field nodes, Gauss points, stable "
            "and first step, steps, memory, force kernel, and the checkpoint fingerprint's "

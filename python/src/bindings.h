@@ -2,11 +2,13 @@
 // The compiled part of the Python module (softgrain._softgrain), one file per role, gathered
 // by module.cpp:
 //   bind_errors.cpp      sg::Error -> softgrain.Error / softgrain.ScenarioError
-//   bind_scenario.cpp    Scenario: from a file, a dict or TOML text; to_dict, to_toml, info
+//   bind_scenario.cpp    Scenario: from a file or TOML text; to_toml, info (the dict side,
+//                        from_dict and to_dict, is softgrain/scenario_dict.py)
 //   bind_simulation.cpp  Simulation: a run stepped from Python (run/run_session.h), with
 //                        read-only zero-copy NumPy views of its state
 //   bind_campaign.cpp    the campaign's process queue (softgrain.run_scenarios)
-// The pure-Python part (softgrain/*.py) reads run folders and defines the exceptions.
+// The pure-Python part (softgrain/*.py) reads run folders, writes dicts as TOML, defines the
+// exceptions and runs scenario lists through the queue.
 #include <pybind11/pybind11.h>
 
 #include <filesystem>
