@@ -150,7 +150,10 @@ class PySimulation {
       if (PyErr_CheckSignals() != 0) throw py::error_already_set();  // Ctrl-C between batches
       if (!callback.is_none()) {
         const py::object answer = callback(self);
-        if (!answer.is_none() && !answer.cast<bool>()) return false;
+        if (!answer.is_none() && !answer.cast<bool>()) {
+          close_if_ended();  // stopped on the last step: the run is complete all the same
+          return false;
+        }
       }
     }
     close_if_ended();

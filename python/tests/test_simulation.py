@@ -195,3 +195,12 @@ def test_rigid_force_views_are_the_series_first_body_forces(small_cell, tmp_path
 def test_a_negative_thread_count_is_refused(small_cell):
     with pytest.raises(softgrain.Error, match="threads"):
         softgrain.Simulation(softgrain.Scenario.from_dict(copy.deepcopy(small_cell)), threads=-1)
+
+
+def test_a_stop_on_the_last_step_still_completes_the_run(small_cell, tmp_path):
+    d = copy.deepcopy(small_cell)
+    d["time"]["duration"] = 0.02
+    sim = softgrain.Simulation(softgrain.Scenario.from_dict(d), threads=1, output=tmp_path)
+    assert sim.run(every=10**6, callback=lambda s: False) is False  # one batch: to the end
+    assert sim.reached_end and sim.closed
+    assert (tmp_path / "small-cell" / "series.csv").exists()
