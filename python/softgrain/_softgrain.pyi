@@ -121,6 +121,8 @@ class Simulation:
         """Physical node velocities (n, 2): a new array."""
     def bodies(self) -> Dict[str, Any]:
         """Per body (new arrays): name, rigid, x, y, vx, vy, theta."""
+    def __repr__(self) -> str:
+        """Name, time, step count, run folder (or 'in memory'), closed."""
 
 def _run_process_queue(jobs: List[Any], parallel: int,
                        on_finished: Optional[Callable[[Dict[str, Any]], None]] = None) -> Any:

@@ -23,6 +23,7 @@
 #include <fstream>
 #include <iostream>
 #include <optional>
+#include <sstream>
 
 #include "bindings.h"
 #include "core/error.h"
@@ -429,6 +430,17 @@ reaches its duration; close() before that leaves the folder as a killed run leav
       .def(
           "node_velocities", [](const PySimulation& s) { return node_vectors(s, true); },
           "Physical node velocities (n, 2), through the MLS rows: a new array.")
+      .def("__repr__",
+           [](const PySimulation& s) {
+             std::ostringstream text;
+             text << "softgrain.Simulation('" << s.scenario().def.name
+                  << "', time=" << s.sim().solver.state().time
+                  << ", step_count=" << s.sim().solver.state().step << ", "
+                  << (s.session().directory().empty() ? std::string("in memory")
+                                                      : s.session().directory().string())
+                  << (s.session().closed() ? ", closed" : "") << ")";
+             return text.str();
+           })
       .def("bodies", &bodies,
            "Per body (new arrays): name, rigid, centre of mass x, y, its velocity vx, vy (as "
            "grains/NNNNNN.csv) and rotation theta.");

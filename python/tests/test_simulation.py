@@ -204,3 +204,10 @@ def test_a_stop_on_the_last_step_still_completes_the_run(small_cell, tmp_path):
     assert sim.run(every=10**6, callback=lambda s: False) is False  # one batch: to the end
     assert sim.reached_end and sim.closed
     assert (tmp_path / "small-cell" / "series.csv").exists()
+
+
+def test_repr_names_the_run(small_cell):
+    sim = softgrain.Simulation(softgrain.Scenario.from_dict(copy.deepcopy(small_cell)), threads=1)
+    sim.step()
+    assert repr(sim) == f"softgrain.Simulation('small-cell', time={sim.time:g}, step_count=1, " \
+                        "in memory)"
