@@ -26,23 +26,28 @@ void CheckpointOutput::after_step(const StepTaken&) {
 }
 
 void CheckpointOutput::write_now() {
-  Simulation& sim = context_.simulation;
-  RunLoopState& loop = context_.loop;
-  sim.controller.seal();  // no rollback crosses a checkpoint (resumed = uninterrupted, bitwise)
-  loop.controller = sim.controller.state();
-  capture_state(sim.solver, sim.contacts.get(), checkpoint_.state);
-  checkpoint_.fingerprint = sim.fingerprint;
-  checkpoint_.loop = loop;
-  write_checkpoint(context_.folder.checkpoint(), checkpoint_);
-  // A run resumed from here starts without the IMEX preconditioners' reference states: the
-  // uninterrupted run drops them too, so that both go on with the same factors.
-  sim.solver.refresh_implicit_preconditioners();
+  write_run_checkpoint(context_, context_.folder.checkpoint(), checkpoint_);
   ++written_;
 }
 
-void resume_from_checkpoint(RunContext& context) {
+void write_run_checkpoint(RunContext& context, const std::filesystem::path& path,
+                          Checkpoint& scratch) {
   Simulation& sim = context.simulation;
-  const Checkpoint checkpoint = read_checkpoint(context.folder.checkpoint(), sim.fingerprint);
+  RunLoopState& loop = context.loop;
+  sim.controller.seal();  // no rollback crosses a checkpoint (resumed = uninterrupted, bitwise)
+  loop.controller = sim.controller.state();
+  capture_state(sim.solver, sim.contacts.get(), scratch.state);
+  scratch.fingerprint = sim.fingerprint;
+  scratch.loop = loop;
+  write_checkpoint(path, scratch);
+  // A run resumed from here starts without the IMEX preconditioners' reference states: the
+  // uninterrupted run drops them too, so that both go on with the same factors.
+  sim.solver.refresh_implicit_preconditioners();
+}
+
+void resume_from_checkpoint(RunContext& context, const std::filesystem::path& path) {
+  Simulation& sim = context.simulation;
+  const Checkpoint checkpoint = read_checkpoint(path, sim.fingerprint);
   restore_state(checkpoint.state, sim.solver, sim.contacts.get());
   context.loop = checkpoint.loop;
   sim.controller.set_state(context.loop.controller);

@@ -26,8 +26,13 @@ class CheckpointOutput : public RunObserver {
   void write_now();
 };
 
-// Reads checkpoint.bin into the simulation and the loop state (checked against the
-// simulation's fingerprint).
-void resume_from_checkpoint(RunContext& context);
+// Seals the step controller and writes the state and the loop state to `path` (atomically);
+// what every checkpoint of a run does. `scratch` is reused between calls.
+void write_run_checkpoint(RunContext& context, const std::filesystem::path& path,
+                          Checkpoint& scratch);
+
+// Reads the checkpoint file `path` (a run folder's checkpoint.bin) into the simulation and the
+// loop state (checked against the simulation's fingerprint).
+void resume_from_checkpoint(RunContext& context, const std::filesystem::path& path);
 
 }  // namespace sg

@@ -12,6 +12,9 @@
 // taken by then, and continues: the finished folder is byte-identical to that of a run that
 // never stopped (tests/io/test_checkpoint_restart.cpp).
 // The progress (simulated time, steps/s, ETA) goes to `progress` when it is set.
+//
+// run_scenario loops over a RunSession (run/run_session.h), which programs embedding a run
+// (the Python module) drive step by step themselves.
 #include <filesystem>
 #include <ostream>
 #include <vector>
@@ -31,7 +34,12 @@ struct RunOptions {
   std::filesystem::path
       output_root_override;  // non-empty: replaces the scenario's [output] directory
   bool resume = false;       // continue the run folder from its checkpoint.bin
-  bool profile = false;      // the progress line shows the share of each phase of the step
+  // With `resume`: restore this checkpoint file instead of <run folder>/checkpoint.bin.
+  std::filesystem::path resume_checkpoint;
+  // false: no run folder and none of the run's own outputs (no file is written); the
+  // observers below still see the loop. A resume then needs `resume_checkpoint`.
+  bool write_outputs = true;
+  bool profile = false;  // the progress line shows the share of each phase of the step
   // >= 0: stop after this many steps (of this call), leaving the folder as a killed run
   // leaves it (series.csv.partial, no final snapshot): to test resuming.
   long stop_after_steps = -1;

@@ -46,10 +46,8 @@ void check_contact_laws_cover_materials(const TomlReader& root, const ScenarioDe
   }
 }
 
-}  // namespace
-
-ScenarioDef load_scenario(const std::filesystem::path& file) {
-  const TomlDocument document(file);
+// The scenario `document` holds, checked (`file` names it in messages).
+ScenarioDef read_scenario(const TomlDocument& document, const std::filesystem::path& file) {
   const TomlReader root = document.root();
   root.reject_unknown_keys({"name", "time", "output", "discretization", "physics", "materials",
                             "grains", "walls", "strips", "contact_laws", "contact", "periodic",
@@ -85,6 +83,16 @@ ScenarioDef load_scenario(const std::filesystem::path& file) {
   if (!s.contact_laws.empty()) check_contact_laws_cover_materials(root, s);
   check_scenario_geometry(s, root);  // name, periodic cell, node spacing (docs: "Safety")
   return s;
+}
+
+}  // namespace
+
+ScenarioDef load_scenario(const std::filesystem::path& file) {
+  return read_scenario(TomlDocument(file), file);
+}
+
+ScenarioDef load_scenario_text(std::string_view text, const std::filesystem::path& file) {
+  return read_scenario(TomlDocument(text, file), file);
 }
 
 MaterialPairTable contact_law_table(const ScenarioDef& scenario) {

@@ -4,6 +4,7 @@
 // the engine never sees a file. docs/scenario.md documents every key.
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "contact/contact_system.h"
@@ -116,6 +117,9 @@ ContactSettings contact_settings(const ScenarioDef& scenario);
 
 // Reads and validates a scenario file. Errors: "<file>:<line>: key '<key>': <expected>".
 ScenarioDef load_scenario(const std::filesystem::path& file);
+// The same from TOML text, named `file` in messages; relative file keys (grain CSV files)
+// resolve against the folder of `file` (the Python module's Scenario.from_dict).
+ScenarioDef load_scenario_text(std::string_view text, const std::filesystem::path& file);
 
 // Builds the model (discretizes every grain, sets initial velocities and stretches).
 Model build_model(const ScenarioDef& scenario);

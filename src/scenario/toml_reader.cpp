@@ -24,6 +24,16 @@ TomlDocument::TomlDocument(const std::filesystem::path& file) : file_(file), par
   }
 }
 
+TomlDocument::TomlDocument(std::string_view text, const std::filesystem::path& file)
+    : file_(file), parsed_(nullptr) {
+  try {
+    parsed_ = new ParsedToml{toml::parse(text, file.string())};
+  } catch (const toml::parse_error& e) {
+    SG_THROW(file.string() << ":" << e.source().begin.line << ":" << e.source().begin.column
+                           << ": TOML syntax error: " << e.description());
+  }
+}
+
 TomlDocument::~TomlDocument() {
   delete parsed_;
 }

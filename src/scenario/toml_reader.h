@@ -7,6 +7,7 @@
 #include <initializer_list>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -89,6 +90,9 @@ struct ParsedToml;
 class TomlDocument {
  public:
   explicit TomlDocument(const std::filesystem::path& file);
+  // The TOML text `text`, named `file` in messages (relative file keys resolve against its
+  // folder): a scenario built in memory (the Python module's Scenario.from_dict).
+  TomlDocument(std::string_view text, const std::filesystem::path& file);
   ~TomlDocument();
   TomlDocument(const TomlDocument&) = delete;
   TomlDocument& operator=(const TomlDocument&) = delete;

@@ -1,0 +1,210 @@
+#include "run/run_session.h"
+
+#include <omp.h>
+
+#include <iomanip>
+#include <sstream>
+
+#include "core/error.h"
+#include "io/run_directory.h"
+#include "model/force_kernel.h"
+#include "run/checkpoint_output.h"
+#include "run/progress_output.h"
+#include "run/run_log.h"
+#include "run/series_output.h"
+#include "run/snapshot_output.h"
+
+namespace sg {
+
+namespace {
+
+// Checks what a resume needs, then creates the folders of the outputs.
+// `checkpoint`: the file a resume reads (the folder's checkpoint.bin unless another is given).
+void prepare_folder(const RunFolder& folder, const ScenarioDef& scenario, bool resume,
+                    const std::filesystem::path& checkpoint) {
+  const std::string dir = folder.dir.string();
+  if (resume) {
+    SG_VERIFY(std::filesystem::exists(checkpoint),
+              "cannot resume '" << dir << "': no " << checkpoint.filename().string()
+                                << " (the run stopped before its first "
+                                   "checkpoint, or never started); run without --resume");
+    SG_VERIFY(std::filesystem::exists(folder.partial_series()),
+              "cannot resume '" << dir << "': no series.csv.partial"
+                                << (std::filesystem::exists(folder.series())
+                                        ? " (the run is complete: series.csv is there)"
+                                        : ""));
+  }
+  std::filesystem::create_directories(folder.dir / "fields");
+  std::filesystem::create_directories(folder.dir / "grains");
+  if (!scenario.contact_laws.empty()) std::filesystem::create_directories(folder.dir / "contacts");
+}
+
+// The checkpoint a resume reads.
+std::filesystem::path resume_checkpoint(const RunFolder& folder, const RunOptions& options) {
+  return options.resume_checkpoint.empty() ? folder.checkpoint() : options.resume_checkpoint;
+}
+
+// Checks the name and the folder, removes an old checkpoint unless resuming
+// (io/run_directory.h): a run writes and deletes only inside <output root>/<name>/. Then
+// checks what a resume needs and creates the folders of the outputs. Without outputs: no
+// folder (an empty path).
+RunFolder open_run_folder(const ScenarioDef& scenario, const RunOptions& options) {
+  if (!options.write_outputs) return RunFolder{};
+  const std::filesystem::path root =
+      options.output_root_override.empty() ? scenario.output_root : options.output_root_override;
+  RunFolder folder{prepare_run_directory(root, scenario.name, options.resume)};
+  prepare_folder(folder, scenario, options.resume, resume_checkpoint(folder, options));
+  return folder;
+}
+
+std::string describe_resume(const SolverState& state) {
+  std::ostringstream note;
+  note << std::setprecision(10) << "# resumed from checkpoint.bin at step " << state.step
+       << ", time " << state.time << "\n";
+  return note.str();
+}
+
+void announce_start(std::ostream& out, const Simulation& sim, bool resumed) {
+  if (!sim.mass_scaling_note.empty()) out << "softgrain: " << sim.mass_scaling_note.substr(2);
+  out << "softgrain: " << sim.model.bodies.size() << " bodies, " << sim.model.node_count()
+      << " nodes, " << sim.model.gauss_point_count() << " Gauss points; dt = " << sim.first_dt
+      << (sim.first_estimate.damping_limited ? " (damping-limited)" : "") << "; "
+      << omp_get_max_threads() << " threads, " << force_kernel().isa << " force kernel"
+      << (resumed ? "; resumed at step " + std::to_string(sim.solver.state().step) : "") << "\n";
+}
+
+// `series`: null without outputs (no friction line).
+void announce_end(std::ostream& out, bool terminal, const Simulation& sim,
+                  const RunSummary& summary, const SeriesOutput* series, double duration) {
+  const StepStatistics& st = sim.controller.statistics();
+  // On a terminal the progress line is still there, without its line break: overwrite it.
+  const std::string clear_line = terminal ? "\r" + std::string(70, ' ') + "\r" : "";
+  if (st.rejected > 0 || st.dt_min != st.dt_max)
+    out << clear_line << "  step control: " << st.accepted << " steps accepted, " << st.rejected
+        << " rejected, dt in [" << st.dt_min << ", " << st.dt_max << "]\n";
+  if (!summary.completed) return;
+  const EnergyLedger& e = sim.solver.state().energy;
+  out << std::defaultfloat << (st.rejected > 0 || st.dt_min != st.dt_max ? "" : clear_line)
+      << "done: " << sim.solver.state().step << " steps in "
+      << format_duration(summary.wall_seconds) << "; outputs in " << summary.directory.string()
+      << "\n  energy: kinetic " << e.kinetic << ", elastic " << e.elastic << ", external work "
+      << e.external_work << ", damping dissipated " << e.damping_dissipated
+      << ", contact dissipated " << e.contact_dissipated << ", balance residual " << e.residual()
+      << "\n";
+  double mu = 0.0, normal_force = 0.0;
+  if (series && series->top_friction(mu, normal_force))
+    out << "  friction coefficient on the top body over t > " << 0.5 * duration
+        << ": mu = -<Fx>/<Fy> = " << mu << " (mean normal force " << normal_force << ")\n";
+}
+
+}  // namespace
+
+RunSession::RunSession(const ScenarioDef& scenario, const RunOptions& options)
+    : scenario_(scenario),
+      options_(options),
+      start_(clock::now()),
+      folder_(open_run_folder(scenario_, options_)),
+      simulation_(std::make_unique<Simulation>(scenario_, options_.progress)),
+      context_{scenario_, folder_, *simulation_, loop_, 1e-12 * scenario_.duration} {
+  SG_VERIFY(options_.write_outputs || !options_.resume || !options_.resume_checkpoint.empty(),
+            "a run without outputs resumes from a checkpoint file: none given");
+  // The outputs, in the order they observe each step: a checkpoint saves what the series and
+  // the snapshots have committed for the same step.
+  if (options_.write_outputs) {
+    own_outputs_.push_back(std::make_unique<SnapshotOutput>(context_));
+    auto series = std::make_unique<SeriesOutput>(context_);
+    series_ = series.get();
+    own_outputs_.push_back(std::move(series));
+    auto checkpoints = std::make_unique<CheckpointOutput>(context_);
+    checkpoints_ = checkpoints.get();
+    own_outputs_.push_back(std::move(checkpoints));
+  }
+  own_outputs_.push_back(std::make_unique<ProgressOutput>(
+      context_, options_.progress, options_.profile, options_.progress_on_terminal));
+  for (const auto& output : own_outputs_)
+    observers_.push_back(output.get());
+  observers_.insert(observers_.end(), options_.observers.begin(), options_.observers.end());
+
+  Simulation& sim = *simulation_;
+  if (options_.resume) {
+    resume_from_checkpoint(context_, resume_checkpoint(folder_, options_));
+    summary_.resumed_from_step = sim.solver.state().step;
+    resume_note_ = describe_resume(sim.solver.state());
+  }
+  for (RunObserver* observer : observers_)
+    observer->begin(options_.resume);
+  if (options_.write_outputs) write_run_log(folder_.run_log(), scenario_, sim, resume_note_);
+  if (options_.progress) announce_start(*options_.progress, sim, options_.resume);
+  first_step_ = sim.solver.state().step;
+}
+
+RunSession::~RunSession() = default;
+
+bool RunSession::reached_end() const {
+  return simulation_->solver.state().time >= scenario_.duration - context_.time_tolerance;
+}
+
+// The loop's body: step, accept or roll back (the controller), let each output observe.
+void RunSession::step() {
+  SG_VERIFY(!closed_, "run '" << scenario_.name << "': a step after the run was closed");
+  Simulation& sim = *simulation_;
+  StepProfile& profile = sim.solver.profile();
+  PhaseTimer timer(profile);
+  const RunInstant now{sim.solver.state().time, sim.solver.state().step};
+  for (RunObserver* observer : observers_)
+    observer->prepare(now);
+  timer.stamp(StepPhase::outputs);
+  const StepProfile before = profile;
+  const double dt = sim.controller.advance();
+  // The controller's own time: the call less the steps it took (they stamped their phases).
+  timer.stamp(StepPhase::step_control);
+  profile.seconds[static_cast<std::size_t>(StepPhase::step_control)] -=
+      profile.total() - before.total() -
+      (profile[StepPhase::step_control] - before[StepPhase::step_control]);
+  const StepTaken taken{now, dt, sim.solver.state().step == now.step + 1};
+  if (taken.from_start)
+    for (RunObserver* observer : observers_)
+      observer->commit(taken);
+  for (RunObserver* observer : observers_)
+    observer->after_step(taken);
+  timer.stamp(StepPhase::outputs);
+}
+
+RunSummary RunSession::close() {
+  SG_VERIFY(!closed_, "run '" << scenario_.name << "': closed twice");
+  closed_ = true;
+  Simulation& sim = *simulation_;
+  RunSummary& summary = summary_;
+  // Stopped before its duration: as if killed here (no final snapshot, no rename).
+  summary.completed = reached_end();
+  if (summary.completed)
+    for (RunObserver* observer : observers_)
+      observer->finish();
+
+  const StepProfile& profile = sim.solver.profile();
+  summary.directory = folder_.dir;
+  summary.steps = sim.solver.state().step;
+  summary.time_step = sim.first_dt;
+  summary.checkpoints_written = checkpoints_ ? checkpoints_->written() : 0;
+  summary.nodes = sim.model.node_count();
+  summary.wall_seconds = std::chrono::duration<double>(clock::now() - start_).count();
+  summary.node_steps_per_second = static_cast<double>(summary.nodes) *
+                                  static_cast<double>(sim.solver.state().step - first_step_) /
+                                  summary.wall_seconds;
+  summary.profile = profile;
+  if (options_.write_outputs)
+    write_run_log(folder_.run_log(), scenario_, sim,
+                  resume_note_ + describe_step_control(sim.controller.statistics()) +
+                      describe_viscous_solves(sim.solver.viscous_statistics()) +
+                      describe_profile(profile, summary.wall_seconds));
+  if (options_.progress)
+    announce_end(*options_.progress, options_.progress_on_terminal, sim, summary, series_,
+                 scenario_.duration);
+  return summary;
+}
+
+void RunSession::write_checkpoint(const std::filesystem::path& path) {
+  write_run_checkpoint(context_, path, checkpoint_scratch_);
+}
+
+}  // namespace sg
