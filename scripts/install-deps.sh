@@ -13,10 +13,12 @@
 #   python3-matplotlib  plots drawn by /usr/bin/python3 (analysis pictures)
 #   python3-scipy       campaign maps (scattered-data interpolation) and correlations
 #   ffmpeg              the MP4 movies `softgrain render` makes (ffprobe checks them in tests)
+#   slurm-wlm           a one-node Slurm started by the tests of `softgrain sweep --slurm` (tests/slurm/)
+#   munge               the authentication those Slurm daemons need (a key made per test)
 set -euo pipefail
 packages=(cmake g++ make libeigen3-dev libcgal-dev libxsimd-dev libtomlplusplus-dev libcli11-dev
           libgtest-dev libbenchmark-dev libcairo2-dev nlohmann-json3-dev python3-matplotlib python3-numpy
-          python3-scipy ffmpeg)
+          python3-scipy ffmpeg slurm-wlm munge)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
