@@ -45,7 +45,10 @@ const Registration registration(
            ->check(CLI::PositiveNumber);
        auto* dry = cmd->add_flag("--dry-run", a->dry_run,
                                  "write the run folders, runs.txt and slurm-array.sh; list the "
-                                 "runs; run nothing");
+                                 "runs and plan them (nodes, Gauss points, step, measured wall "
+                                 "time per time unit, projected wall time, core-hours); with "
+                                 "--slurm also print the sbatch script and its time limit; run "
+                                 "nothing");
        auto* gather = cmd->add_flag("--gather", a->gather,
                                     "run nothing: gather the finished runs into campaign.csv and "
                                     "draw the map (after cluster jobs)");
@@ -55,6 +58,7 @@ const Registration registration(
                                    "Slurm as one job array, one task per run; record the job id "
                                    "in <campaign>/slurm-jobs.txt");
        slurm->excludes(gather);
+       // (--slurm --dry-run: plan and print the script, submit nothing.)
        auto* status =
            cmd->add_flag("--status", a->status,
                          "run nothing: each run's state from Slurm and its files (pending, "
@@ -114,6 +118,13 @@ const Registration registration(
            return 0;
          }
          const SweepResult r = sweep_campaign(campaign, o);
+         if (a->dry_run) {
+           // What the runs will cost (and, for Slurm, the script and its time limit).
+           const int threads = a->slurm ? slurm_threads(campaign, o) : sweep_threads(campaign, o);
+           const CampaignPlan plan = plan_campaign(campaign, r.folder, threads, &std::cout);
+           if (a->slurm) print_slurm_plan(campaign, o, r.folder, plan, std::cout);
+           return 0;
+         }
          if (r.interrupted) return 130;
          return r.failed > 0 ? 1 : 0;
        });

@@ -195,6 +195,21 @@ SlurmRunStatus from_task(const SlurmTask& task, const fs::path& dir) {
   return s;
 }
 
+// How the planned time limit was chosen, for the terminal.
+std::string planned_limit_note(const CampaignPlan& plan, double margin) {
+  std::ostringstream s;
+  s << "time limit per task " << plan.time_limit(margin) << ": " << margin
+    << " x the longest projected run (" << format_wall_time(plan.longest_seconds()) << ") + "
+    << kAnalysisAllowance / 60 << " min for start-up and analysis ([slurm] time or --time sets it)";
+  return s.str();
+}
+
+void write_script(const fs::path& folder, const std::string& script) {
+  write_file_atomically(folder / kSlurmScriptFile, script);
+  fs::permissions(folder / kSlurmScriptFile, fs::perms::owner_exec | fs::perms::group_exec,
+                  fs::perm_options::add);
+}
+
 }  // namespace
 
 const char* slurm_run_state_name(SlurmRunState state) {
@@ -344,10 +359,19 @@ SlurmSubmission submit_campaign_to_slurm(const CampaignDef& campaign, const Swee
   spec.array =
       slurm_array_spec(runs.empty() ? std::vector<std::size_t>{0} : runs, settings.max_running);
   spec.time_limit = settings.time;
+  if (spec.time_limit.empty() && !runs.empty()) {
+    CampaignPlan plan;
+    plan.threads = threads;
+    if (out)
+      *out << "measuring the runs to plan the time limit (" << kMeasureSeconds << " s each)\n";
+    for (std::size_t i : runs)
+      plan.runs.push_back(
+          plan_run(campaign_run_folder(folder, campaign.runs[i]) / "scenario.toml", threads));
+    spec.time_limit = plan.time_limit(settings.time_margin);
+    if (out) *out << planned_limit_note(plan, settings.time_margin) << "\n";
+  }
   submission.script = slurm_array_script(campaign, settings, spec);
-  write_file_atomically(folder / kSlurmScriptFile, submission.script);
-  fs::permissions(folder / kSlurmScriptFile, fs::perms::owner_exec | fs::perms::group_exec,
-                  fs::perm_options::add);
+  write_script(folder, submission.script);
 
   if (out)
     *out << "campaign '" << campaign.name << "': " << campaign.runs.size() << " runs, " << done
@@ -369,6 +393,48 @@ SlurmSubmission submit_campaign_to_slurm(const CampaignDef& campaign, const Swee
          << "); recorded in " << kSlurmJobsFile << "\n"
          << "follow it with: softgrain sweep " << campaign.file.string() << " --status\n";
   return submission;
+}
+
+}  // namespace sg
+
+namespace sg {
+
+void print_slurm_plan(const CampaignDef& campaign, const SweepOptions& options,
+                      const fs::path& folder, const CampaignPlan& plan, std::ostream& out) {
+  const SlurmSettings& settings = campaign.slurm;
+  SlurmScriptSpec spec;
+  spec.executable = options.executable;
+  spec.threads = slurm_threads(campaign, options);
+  std::vector<std::size_t> all(campaign.runs.size());
+  for (std::size_t i = 0; i < all.size(); ++i)
+    all[i] = i;
+  spec.array = slurm_array_spec(all, settings.max_running);
+  spec.time_limit = settings.time.empty() ? plan.time_limit(settings.time_margin) : settings.time;
+  if (settings.time.empty()) out << planned_limit_note(plan, settings.time_margin) << "\n";
+  const std::string script = slurm_array_script(campaign, settings, spec);
+  write_script(folder, script);
+  out << "sbatch script (" << (folder / kSlurmScriptFile).string()
+      << "; `sweep --slurm` submits the unfinished runs with --array=<their indices>):\n"
+      << script;
+  const std::optional<long> limit = parse_slurm_time(spec.time_limit);
+  if (!limit || *limit < 0) return;
+  std::size_t too_long = 0;
+  for (std::size_t i = 0; i < campaign.runs.size(); ++i) {
+    const double projected = plan.runs[i].projected_seconds();
+    if (projected > static_cast<double>(*limit)) {
+      ++too_long;
+      out << "WARNING: run " << campaign.runs[i].id << ": projected wall time "
+          << format_wall_time(projected) << " does not fit the time limit " << spec.time_limit
+          << " (it would be stopped and resumed from its checkpoint at every resubmission)\n";
+    } else if (projected * settings.time_margin > static_cast<double>(*limit)) {
+      out << "warning: run " << campaign.runs[i].id << ": projected wall time "
+          << format_wall_time(projected) << " is within the margin (" << settings.time_margin
+          << " x) of the time limit " << spec.time_limit << "\n";
+    }
+  }
+  if (too_long)
+    out << "WARNING: " << too_long << " of " << campaign.runs.size()
+        << " runs cannot finish within the time limit " << spec.time_limit << "\n";
 }
 
 }  // namespace sg

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "campaign/campaign_def.h"
+#include "campaign/campaign_plan.h"
 #include "campaign/slurm_settings.h"
 #include "campaign/sweep.h"
 
@@ -67,9 +68,17 @@ struct SlurmSubmission {
 
 // Prepares the campaign folder (campaign/sweep.h), writes slurm-array.sh (campaign.slurm's
 // settings) and submits the runs that are neither done nor pending or running in the
-// scheduler; records the job. options: executable, output_root, threads (> 0: replaces the
-// campaign's; default 1), out.
+// scheduler; records the job. Without a time limit ([slurm] time, --time), the runs to submit
+// are measured first (campaign_plan.h) and the planned limit is used. options: executable,
+// output_root, threads (> 0: replaces the campaign's; default 1), out.
 SlurmSubmission submit_campaign_to_slurm(const CampaignDef& campaign, const SweepOptions& options);
+
+// `sweep --dry-run --slurm`, after the plan: writes slurm-array.sh as --slurm would submit it
+// (all runs; the time limit given, or planned), prints it, and warns about every run whose
+// projected wall time does not fit the time limit.
+void print_slurm_plan(const CampaignDef& campaign, const SweepOptions& options,
+                      const std::filesystem::path& folder, const CampaignPlan& plan,
+                      std::ostream& out);
 
 // The threads (= --cpus-per-task) of each run on Slurm: options.threads, else the campaign's
 // `threads`, else 1 (the submitting machine's core count says nothing about the nodes).

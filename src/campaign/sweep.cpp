@@ -173,6 +173,14 @@ bool campaign_run_finished(const fs::path& run_folder) {
   return fs::exists(run_folder / kSummary);
 }
 
+int sweep_threads(const CampaignDef& campaign, const SweepOptions& options) {
+  const int parallel = options.parallel > 0 ? options.parallel : campaign.parallel;
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  return options.threads > 0    ? options.threads
+         : campaign.threads > 0 ? campaign.threads
+                                : std::max(1, cores / parallel);
+}
+
 fs::path campaign_folder(const CampaignDef& campaign, const SweepOptions& options) {
   const fs::path root = options.output_root.empty() ? campaign.output_root : options.output_root;
   return fs::absolute(root / campaign.name).lexically_normal();
@@ -371,10 +379,7 @@ SweepResult sweep_campaign(const CampaignDef& campaign, const SweepOptions& opti
   std::ostream* out = options.out;
   const fs::path folder = prepare_campaign_folder(campaign, options);
   const int parallel = options.parallel > 0 ? options.parallel : campaign.parallel;
-  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  const int threads = options.threads > 0    ? options.threads
-                      : campaign.threads > 0 ? campaign.threads
-                                             : std::max(1, cores / parallel);
+  const int threads = sweep_threads(campaign, options);
 
   SweepResult result;
   result.folder = folder;

@@ -58,6 +58,10 @@ std::filesystem::path campaign_run_folder(const std::filesystem::path& campaign_
 // True iff the run in `run_folder` is finished: its analysis/summary.json exists.
 bool campaign_run_finished(const std::filesystem::path& run_folder);
 
+// The OpenMP threads of each local run: options.threads, else the campaign's `threads`, else
+// cores / parallel.
+int sweep_threads(const CampaignDef& campaign, const SweepOptions& options);
+
 // The campaign folder: <output>/<name>, absolute (options.output_root replaces `output`).
 std::filesystem::path campaign_folder(const CampaignDef& campaign, const SweepOptions& options);
 
