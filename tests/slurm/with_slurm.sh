@@ -36,6 +36,7 @@ dir=$(mktemp -d "${TMPDIR:-/tmp}/softgrain-slurm.XXXXXX")
 chmod 755 "$dir"  # munged refuses a socket folder writable by others; jobs must read the conf
 export SLURM_CONF="$dir/slurm.conf"
 pids=()
+watchdog=""
 
 # Every process started here, and every process of a job of this cluster (slurmstepd and the
 # job's own processes carry SLURM_CONF in their environment; slurmstepd outlives slurmd).
@@ -52,6 +53,10 @@ cluster_processes() {
 stop_cluster() {
   local status=$? p i left
   trap - EXIT INT TERM
+  if [ -n "$watchdog" ]; then
+    kill -TERM "$watchdog" 2>/dev/null || true
+    wait "$watchdog" 2>/dev/null || true
+  fi
   # Jobs first (while slurmctld can still cancel them), then the daemons, then stragglers.
   timeout 10 scancel --full --quiet --user=root >/dev/null 2>&1 || true
   for i in $(seq 1 20); do
@@ -203,6 +208,15 @@ if [ "$state" != idle ]; then
   done
   fail "the test cluster did not start"
 fi
+# If this script is killed outright (SIGKILL, e.g. a test runner's time-out), the trap does not
+# run: a watchdog then stops the daemons and the jobs' processes itself.
+(
+  trap 'exit 0' TERM
+  while kill -0 $$ 2>/dev/null; do sleep 1 & wait $!; done
+  for p in "${pids[@]}" $(cluster_processes); do kill -KILL "$p" 2>/dev/null; done
+  rm -rf "$dir"
+) </dev/null >/dev/null 2>&1 &
+watchdog=$!
 echo "with_slurm.sh: one-node cluster up ($cpus CPUs, ports $ctld_port/$slurmd_port, $dir)"
 
 set +e
