@@ -6,9 +6,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "campaign/campaign_def.h"
+#include "campaign/slurm_campaign.h"
 #include "campaign/slurm_commands.h"
 #include "campaign/slurm_script.h"
 #include "campaign/slurm_settings.h"
@@ -214,6 +216,53 @@ TEST(SlurmCommands, ParsesSbatchSqueueAndSacct) {
   EXPECT_EQ(accounted.at(0).elapsed, 3600.0);
   EXPECT_EQ(parse_squeue_elapsed("5:07"), 307.0);
   EXPECT_EQ(parse_squeue_elapsed("INVALID"), 0.0);
+}
+
+}  // namespace
+}  // namespace sg
+
+namespace sg {
+namespace {
+
+// --status from the runs' own files, before any submission (no scheduler is asked): a done
+// run with its mu, a failed run with its failed command and the last error line of its log,
+// a run never submitted. (The scheduler's states are tested against Slurm in tests/slurm/.)
+TEST(SlurmStatus, RunsFilesGiveDoneFailedAndNotSubmitted) {
+  campaign_with("");  // writes base.toml
+  CampaignDef c = load_campaign(write("s.toml",
+                                      "scenario = \"base.toml\"\noutput = \"out\"\n"
+                                      "[grid]\n\"materials.0.young\" = [10.0, 20.0, "
+                                      "30.0]\n"));
+  SweepOptions o;
+  const fs::path folder = prepare_campaign_folder(c, o);
+  const fs::path done = campaign_run_folder(folder, c.runs[0]);
+  fs::create_directories(done / "analysis");
+  std::ofstream(done / "analysis" / "summary.json")
+      << R"({"format": "softgrain-analysis-summary", "version": 1,
+            "quantities": {"mu": {"value": 0.3125}}})";
+  const fs::path failed = campaign_run_folder(folder, c.runs[1]);
+  std::ofstream(failed / "sweep.failed") << "`softgrain run` exited with status 1 after 3 s\n";
+  std::ofstream(failed / "sweep.log")
+      << "softgrain: 3 bodies\n\nsoftgrain: error: step 12: non-finite position\nbye\n";
+
+  const SlurmCampaignStatus s = slurm_campaign_status(c, folder);
+  ASSERT_EQ(s.runs.size(), 3u);
+  EXPECT_EQ(s.runs[0].state, SlurmRunState::done);
+  EXPECT_EQ(s.runs[0].detail, "mu = 0.312");
+  EXPECT_EQ(s.runs[1].state, SlurmRunState::failed);
+  EXPECT_EQ(s.runs[1].detail,
+            "`softgrain run` exited with status 1 after 3 s: softgrain: error: step 12: "
+            "non-finite position");
+  EXPECT_EQ(s.runs[2].state, SlurmRunState::not_submitted);
+  EXPECT_EQ(s.runs[2].task, "");
+  EXPECT_EQ(s.summary(),
+            "3 runs: 1 done, 1 failed, 1 not submitted; 0.00 core-hours used by the tasks Slurm "
+            "reports");
+  std::ostringstream printed;
+  print_slurm_status(c, s, printed);
+  EXPECT_NE(printed.str().find("  failed       run-001_young=20  `softgrain run` exited"),
+            std::string::npos)
+      << printed.str();
 }
 
 }  // namespace

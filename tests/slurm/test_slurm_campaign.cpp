@@ -1,7 +1,8 @@
 // `softgrain sweep --slurm` against a real Slurm (run inside tests/slurm/with_slurm.sh, which
-// starts a one-node cluster and sets SLURM_CONF): a 2 x 2 campaign of tiny runs is submitted
-// as one job array (2 tasks at a time); a task is cancelled with scancel once its run has a
-// checkpoint; --status reports it cancelled and --gather names it missing; the campaign is
+// starts a one-node cluster and sets SLURM_CONF): a submission to an unknown partition fails
+// with Slurm's reason; a 2 x 2 campaign of tiny runs is submitted as one job array (2 tasks at
+// a time); a task is cancelled with scancel once its run has a checkpoint; --status reports it
+// cancelled and --gather names it missing; the campaign is
 // submitted again: only that run is, it resumes from its checkpoint, and the runs finished
 // before are not touched (files' bytes and modification times); a third submission submits
 // nothing. The gathered table and every run's series.csv are then bitwise those of a local
@@ -175,6 +176,14 @@ TEST_F(SlurmCampaign, CancelledTaskResumesOnResubmissionAndResultsMatchALocalSwe
   const auto finished = [&](const std::string& id) {
     return fs::exists(runs / id / "analysis" / "summary.json");
   };
+
+  // A submission Slurm refuses is an error with Slurm's reason, and records nothing.
+  const Output refused = softgrain(
+      dir_, {"sweep", "campaign.toml", "--slurm", "--partition", "nosuch", "--time", "5"});
+  EXPECT_EQ(refused.code, 1) << refused.text;
+  EXPECT_NE(refused.text.find("sbatch failed"), std::string::npos) << refused.text;
+  EXPECT_NE(refused.text.find("partition"), std::string::npos) << refused.text;
+  EXPECT_FALSE(fs::exists(folder / "slurm-jobs.txt"));
 
   // Submission: one array of the 4 runs, 2 at a time.
   const Output first = softgrain(dir_, {"sweep", "campaign.toml", "--slurm"});
