@@ -20,6 +20,7 @@ struct SweepArguments {
   bool dry_run = false;
   bool gather = false;
   bool no_plot = false;
+  bool no_plan = false;
   bool slurm = false;
   bool status = false;
   // [slurm] overrides; CLI leaves a std::optional empty when its option is not given.
@@ -65,6 +66,9 @@ const Registration registration(
                          "running, done, failed, timed out, cancelled) and a summary");
        status->excludes(dry)->excludes(gather)->excludes(slurm);
        cmd->add_flag("--no-plot", a->no_plot, "do not draw mu_map.png");
+       cmd->add_flag("--no-plan", a->no_plan,
+                     "with --dry-run: do not measure the runs (about a second each plus its "
+                     "model build)");
        const std::string group = "Slurm (override the campaign's [slurm] table)";
        cmd->add_option("--partition", a->partition, "sbatch --partition")->group(group);
        cmd->add_option("--account", a->account, "sbatch --account")->group(group);
@@ -118,7 +122,7 @@ const Registration registration(
            return 0;
          }
          const SweepResult r = sweep_campaign(campaign, o);
-         if (a->dry_run) {
+         if (a->dry_run && !a->no_plan) {
            // What the runs will cost (and, for Slurm, the script and its time limit).
            const int threads = a->slurm ? slurm_threads(campaign, o) : sweep_threads(campaign, o);
            const CampaignPlan plan = plan_campaign(campaign, r.folder, threads, &std::cout);
