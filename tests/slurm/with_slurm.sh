@@ -32,7 +32,11 @@ for tool in munged slurmctld slurmd sbatch squeue scontrol scancel sinfo; do
 done
 export PATH="$PATH:/usr/sbin"
 
-dir=$(mktemp -d "${TMPDIR:-/tmp}/softgrain-slurm.XXXXXX")
+umask 022  # munged refuses key, socket and log folders that others can write
+# A Unix socket path has at most 107 bytes: a deep TMPDIR gives way to /tmp.
+tmp=${TMPDIR:-/tmp}
+[ ${#tmp} -gt 60 ] && tmp=/tmp
+dir=$(mktemp -d "$tmp/softgrain-slurm.XXXXXX")
 chmod 755 "$dir"  # munged refuses a socket folder writable by others; jobs must read the conf
 export SLURM_CONF="$dir/slurm.conf"
 pids=()
