@@ -399,6 +399,7 @@ SweepResult sweep_campaign(const CampaignDef& campaign, const SweepOptions& opti
     spec.time_limit = campaign.slurm.time;
     write_file_atomically(folder / kSlurmScriptFile,
                           slurm_array_script(campaign, campaign.slurm, spec));
+    fs::create_directories(folder / kSlurmOutputFolder);  // sbatch by hand: Slurm won't make it
     if (out) list_runs(campaign, folder, progress, *out);
     count_states(progress, result);
     return result;
