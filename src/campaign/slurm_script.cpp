@@ -107,6 +107,8 @@ std::string slurm_array_script(const CampaignDef& campaign, const SlurmSettings&
     << "    note \"starts $id\"\n"
     << "    " << run << " >> \"$log\" 2>&1 || failed run $?\n"
     << "  fi\n"
+    << "else\n"
+    << "  note \"analyses $id (its simulation finished)\"\n"
     << "fi\n"
     << "\"$SOFTGRAIN\" --threads \"$threads\" analyze \"$dir\"" << analyze_options
     << " >> \"$log\" 2>&1 || failed analyze $?\n"

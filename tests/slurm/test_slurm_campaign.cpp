@@ -1,8 +1,9 @@
 // `softgrain sweep --slurm` against a real Slurm (run inside tests/slurm/with_slurm.sh, which
 // starts a one-node cluster and sets SLURM_CONF): a submission to an unknown partition fails
 // with Slurm's reason; a 2 x 2 campaign of tiny runs is submitted as one job array (2 tasks at
-// a time); a task is cancelled with scancel once its run has a checkpoint; --status reports it
-// cancelled and --gather names it missing; the campaign is
+// a time); once its first two runs have a checkpoint, one task is cancelled with scancel and
+// the other re-queued (scontrol requeue, as after a node failure: it resumes its run in the
+// same job); --status reports the first cancelled and --gather names it missing; the campaign is
 // submitted again: only that run is, it resumes from its checkpoint, and the runs finished
 // before are not touched (files' bytes and modification times); a third submission submits
 // nothing. The gathered table and every run's series.csv are then bitwise those of a local
@@ -192,23 +193,31 @@ TEST_F(SlurmCampaign, CancelledTaskResumesOnResubmissionAndResultsMatchALocalSwe
   ASSERT_FALSE(job.empty()) << first.text;
   ASSERT_EQ(job_records(folder), std::vector<std::string>{job + " 0-3%2"});
 
-  // Cancel the first task seen running with a checkpoint.
-  std::size_t victim = kRuns.size();
+  // The two tasks that run first start together: once both runs have a checkpoint, cancel one
+  // (scancel) and re-queue the other as Slurm does after a node failure or a preemption
+  // (scontrol requeue, then no wait for the re-queued task's begin time).
+  std::vector<std::size_t> mid_run;
   ASSERT_TRUE(wait_for(
       [&] {
+        mid_run.clear();
         for (std::size_t i = 0; i < kRuns.size(); ++i)
           if (fs::exists(runs / kRuns[i] / "checkpoint.bin") &&
-              !fs::exists(runs / kRuns[i] / "series.csv")) {
-            victim = i;
-            return true;
-          }
-        return false;
+              !fs::exists(runs / kRuns[i] / "series.csv"))
+            mid_run.push_back(i);
+        return mid_run.size() == 2;
       },
       180s))
       << softgrain(dir_, {"sweep", "campaign.toml", "--status"}).text;
+  const std::size_t victim = mid_run[0], requeued = mid_run[1];
   const std::string task = job + "_" + std::to_string(victim);
   const CommandResult cancel = run_command({"scancel", task});
   ASSERT_EQ(cancel.exit_code, 0) << cancel.err;
+  const std::string requeued_task = job + "_" + std::to_string(requeued);
+  const CommandResult requeue = run_command({"scontrol", "requeue", requeued_task});
+  ASSERT_EQ(requeue.exit_code, 0) << requeue.err;
+  const CommandResult now =
+      run_command({"scontrol", "update", "JobId=" + requeued_task, "StartTime=now"});
+  ASSERT_EQ(now.exit_code, 0) << now.err;
 
   // --status reports it cancelled; --gather names it missing.
   Output status;
@@ -265,6 +274,11 @@ TEST_F(SlurmCampaign, CancelledTaskResumesOnResubmissionAndResultsMatchALocalSwe
       << log;
   EXPECT_NE(log.find("from its checkpoint"), std::string::npos) << log;
   EXPECT_NE(log.find("(resumed at step "), std::string::npos) << log;
+  // The re-queued task ran again (restart 1) and resumed its run in the same job.
+  const std::string requeued_log = read(runs / kRuns[requeued] / "sweep.log");
+  EXPECT_NE(requeued_log.find("Slurm task " + requeued_task + " on "), std::string::npos)
+      << requeued_log;
+  EXPECT_NE(requeued_log.find("(restart 1): resumes"), std::string::npos) << requeued_log;
   EXPECT_EQ(changed_files(before, snapshot(runs, done_before)), std::vector<std::string>{})
       << "a finished run was touched";
 

@@ -145,7 +145,10 @@ if [ ! -S "$socket" ]; then
 fi
 
 host=$(hostname -s)
-cpus=$(nproc)
+# The online CPUs (not nproc, which follows OMP_NUM_THREADS), at least 2 so that two tasks can
+# run at once on any machine (config_overrides: slurmd takes the configured count as is).
+cpus=$(getconf _NPROCESSORS_ONLN)
+[ "$cpus" -ge 2 ] || cpus=2
 memory_mb=$(awk '/^MemTotal:/ {print int($2 / 1024 * 0.8)}' /proc/meminfo)
 cat >"$SLURM_CONF" <<CONF
 # One-node test cluster written by tests/slurm/with_slurm.sh; everything in $dir.
@@ -176,6 +179,7 @@ SwitchType=switch/none
 SchedulerType=sched/builtin
 SelectType=select/cons_tres
 SelectTypeParameters=CR_CPU
+SlurmdParameters=config_overrides
 ReturnToService=2
 # Finished jobs stay visible to squeue/scontrol for 10 min (there is no accounting);
 # a cancelled or timed-out task gets 5 s between SIGTERM and SIGKILL.
