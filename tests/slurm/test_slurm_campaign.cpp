@@ -17,6 +17,8 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iomanip>
+#include <iostream>
 #include <map>
 #include <sstream>
 #include <string>
@@ -152,6 +154,19 @@ std::string submitted_job(const std::string& sweep_output) {
   return id;
 }
 
+// Prints the seconds since the test began before each phase: where a slow run spent its time.
+class PhaseClock {
+ public:
+  void operator()(const std::string& phase) const {
+    std::cout << "[" << std::fixed << std::setprecision(1)
+              << std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count()
+              << " s] " << phase << std::endl;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
 class SlurmCampaign : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -178,6 +193,8 @@ TEST_F(SlurmCampaign, CancelledTaskResumesOnResubmissionAndResultsMatchALocalSwe
     return fs::exists(runs / id / "analysis" / "summary.json");
   };
 
+  const PhaseClock phase;
+  phase("refused submission");
   // A submission Slurm refuses is an error with Slurm's reason, and records nothing.
   const Output refused = softgrain(
       dir_, {"sweep", "campaign.toml", "--slurm", "--partition", "nosuch", "--time", "5"});
@@ -186,6 +203,7 @@ TEST_F(SlurmCampaign, CancelledTaskResumesOnResubmissionAndResultsMatchALocalSwe
   EXPECT_NE(refused.text.find("partition"), std::string::npos) << refused.text;
   EXPECT_FALSE(fs::exists(folder / "slurm-jobs.txt"));
 
+  phase("submission");
   // Submission: one array of the 4 runs, 2 at a time.
   const Output first = softgrain(dir_, {"sweep", "campaign.toml", "--slurm"});
   ASSERT_EQ(first.code, 0) << first.text;
@@ -193,6 +211,7 @@ TEST_F(SlurmCampaign, CancelledTaskResumesOnResubmissionAndResultsMatchALocalSwe
   ASSERT_FALSE(job.empty()) << first.text;
   ASSERT_EQ(job_records(folder), std::vector<std::string>{job + " 0-3%2"});
 
+  phase("waiting for two runs with a checkpoint");
   // The two tasks that run first start together: once both runs have a checkpoint, cancel one
   // (scancel) and re-queue the other as Slurm does after a node failure or a preemption
   // (scontrol requeue, then no wait for the re-queued task's begin time).
@@ -215,10 +234,20 @@ TEST_F(SlurmCampaign, CancelledTaskResumesOnResubmissionAndResultsMatchALocalSwe
   const std::string requeued_task = job + "_" + std::to_string(requeued);
   const CommandResult requeue = run_command({"scontrol", "requeue", requeued_task});
   ASSERT_EQ(requeue.exit_code, 0) << requeue.err;
+  // Once its processes are gone the task is pending again, held until its begin time (now + 2
+  // min in Slurm 22.05): moved to now (done earlier, the requeue would set it again).
+  ASSERT_TRUE(wait_for(
+      [&] {
+        const auto tasks = query_array_tasks(job);
+        return tasks && tasks->count(requeued) && tasks->at(requeued).state == "PENDING" &&
+               tasks->at(requeued).reason == "BeginTime";
+      },
+      60s));
   const CommandResult now =
       run_command({"scontrol", "update", "JobId=" + requeued_task, "StartTime=now"});
   ASSERT_EQ(now.exit_code, 0) << now.err;
 
+  phase("cancelled and re-queued; waiting for --status");
   // --status reports it cancelled; --gather names it missing.
   Output status;
   ASSERT_TRUE(wait_for(
@@ -238,6 +267,7 @@ TEST_F(SlurmCampaign, CancelledTaskResumesOnResubmissionAndResultsMatchALocalSwe
   EXPECT_EQ(partial.code, 0) << partial.text;
   EXPECT_NE(partial.text.find("missing: " + kRuns[victim]), std::string::npos) << partial.text;
 
+  phase("waiting for a finished run, then resubmission");
   // Resubmission once another run has finished (its task completed: `analyze` draws its
   // pictures after writing summary.json): only the cancelled run is submitted (the others are
   // done, or still pending or running in the first array).
@@ -261,6 +291,7 @@ TEST_F(SlurmCampaign, CancelledTaskResumesOnResubmissionAndResultsMatchALocalSwe
             (std::vector<std::string>{job + " 0-3%2", job2 + " " + std::to_string(victim) + "%2"}))
       << second.text;
 
+  phase("waiting for every run");
   // Every run finishes; the cancelled one resumed from its checkpoint.
   ASSERT_TRUE(wait_for(
       [&] {
@@ -282,6 +313,7 @@ TEST_F(SlurmCampaign, CancelledTaskResumesOnResubmissionAndResultsMatchALocalSwe
   EXPECT_EQ(changed_files(before, snapshot(runs, done_before)), std::vector<std::string>{})
       << "a finished run was touched";
 
+  phase("third submission");
   // Submitting a finished campaign submits nothing and touches nothing.
   const Output third = softgrain(dir_, {"sweep", "campaign.toml", "--slurm"});
   EXPECT_EQ(third.code, 0) << third.text;
@@ -290,6 +322,7 @@ TEST_F(SlurmCampaign, CancelledTaskResumesOnResubmissionAndResultsMatchALocalSwe
   EXPECT_EQ(changed_files(before, snapshot(runs, done_before)), std::vector<std::string>{})
       << "a finished run was touched";
 
+  phase("gather and local sweep");
   // Gathered, and bitwise the local sweep's results.
   const Output gathered = softgrain(dir_, {"sweep", "campaign.toml", "--gather", "--no-plot"});
   ASSERT_EQ(gathered.code, 0) << gathered.text;
@@ -305,6 +338,7 @@ TEST_F(SlurmCampaign, CancelledTaskResumesOnResubmissionAndResultsMatchALocalSwe
     EXPECT_TRUE(series == read(local_folder / "runs" / id / "series.csv"))
         << id << ": series.csv differs between Slurm and the local sweep";
   }
+  phase("done");
 }
 
 }  // namespace
