@@ -43,6 +43,10 @@ double trailing_wall_time(const std::string& line) {
 
 TEST(CampaignPlan, ProjectedWallTimeIsWithinAFactorTwoOfTheRunsOwn) {
   const fs::path dir = scenes::process_temp_dir("plan");
+  struct Remove {
+    fs::path dir;
+    ~Remove() { fs::remove_all(dir); }
+  } remove{dir};
   // The tiny scene, finer and longer: a few seconds on one thread.
   std::ofstream(dir / "tiny.toml")
       << "name = \"tiny\"\n[time]\nduration = 40.0\n[output]\n"
@@ -81,7 +85,6 @@ analyze_options = ["--no-agglomerates"]
   EXPECT_GT(projected, measured / 2) << row << "\nrun.log: " << measured << " s";
   EXPECT_LT(projected, measured * 2) << row << "\nrun.log: " << measured << " s";
   std::cout << "projected " << projected << " s, the run took " << measured << " s\n";
-  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -23,6 +23,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The test folder goes when the test process ends (ctest runs each test in a process).
+class RemoveTestFolder : public ::testing::Environment {
+ public:
+  void TearDown() override { fs::remove_all(scenes::process_temp_dir("slurm_settings")); }
+};
+[[maybe_unused]] const auto* const kRemoveTestFolder =
+    ::testing::AddGlobalTestEnvironment(new RemoveTestFolder);
+
 fs::path write(const std::string& name, const std::string& text) {
   const fs::path p = scenes::process_temp_dir("slurm_settings") / name;
   std::ofstream(p) << text;
