@@ -18,10 +18,12 @@
 #   pybind11-dev        the Python module softgrain (python/), bindings to the C++ engine
 #   python3-dev         the headers of /usr/bin/python3, the interpreter the module is built for
 #   python3-pytest      the Python module's tests (python/tests, run by ctest)
+#   slurm-wlm           a one-node Slurm started by the tests of `softgrain sweep --slurm` (tests/slurm/)
+#   munge               the authentication those Slurm daemons need (a key made per test)
 set -euo pipefail
-packages=(cmake g++ make ccache ninja-build libeigen3-dev libcgal-dev libxsimd-dev libtomlplusplus-dev libcli11-dev
-          libgtest-dev libbenchmark-dev libcairo2-dev nlohmann-json3-dev python3-matplotlib python3-numpy
-          python3-scipy ffmpeg pybind11-dev python3-dev python3-pytest)
+packages=(cmake g++ make ccache ninja-build libeigen3-dev libcgal-dev libxsimd-dev libtomlplusplus-dev
+          libcli11-dev libgtest-dev libbenchmark-dev libcairo2-dev nlohmann-json3-dev python3-matplotlib
+          python3-numpy python3-scipy ffmpeg pybind11-dev python3-dev python3-pytest slurm-wlm munge)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

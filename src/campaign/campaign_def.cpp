@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "campaign/paper_coordinates.h"
+#include "campaign/slurm_settings_reader.h"
 #include "core/error.h"
 #include "core/file_name.h"
 
@@ -460,13 +461,14 @@ struct Varied {
 
 // The campaign's own settings: name, base scenario, output, parallel, threads, analyze_options.
 void read_settings(const fs::path& file, const toml::table& doc, CampaignDef& c) {
-  static const std::set<std::string> known = {"name",    "scenario",        "output", "parallel",
-                                              "threads", "analyze_options", "grid",   "list"};
+  static const std::set<std::string> known = {"name",     "scenario", "output",
+                                              "parallel", "threads",  "analyze_options",
+                                              "grid",     "list",     "slurm"};
   for (const auto& [k, v] : doc)
     if (!known.count(std::string(k.str())))
       fail(file, line_of(v), std::string(k.str()), "",
            "unknown key; expected name, scenario, output, parallel, threads, analyze_options, "
-           "[grid] or [[list]]");
+           "[grid], [[list]] or [slurm]");
 
   c.name = string_value(file, doc, "name", file.stem().string());
   if (!is_plain_file_name(c.name) || file_safe(c.name) != c.name || c.name[0] == '.')
@@ -496,6 +498,7 @@ void read_settings(const fs::path& file, const toml::table& doc, CampaignDef& c)
       c.analyze_options.push_back(e.as_string()->get());
     }
   }
+  c.slurm = read_slurm_settings(file, doc);
 }
 
 // The [[list]] keys in file order, each with its value per entry; the number of entries.

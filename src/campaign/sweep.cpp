@@ -10,6 +10,8 @@
 
 #include "campaign/campaign_table.h"
 #include "campaign/run_queue.h"
+#include "campaign/slurm_campaign.h"
+#include "campaign/slurm_script.h"
 #include "core/error.h"
 #include "core/exit_status.h"
 #include "io/atomic_file.h"
@@ -124,49 +126,6 @@ void write_run_scenarios(const CampaignDef& campaign, const fs::path& folder) {
   write_file_atomically(folder / "runs.txt", ids);
 }
 
-void write_slurm_script(const CampaignDef& campaign, const fs::path& folder,
-                        const SweepOptions& options, int threads) {
-  std::string analyze_options;
-  for (const std::string& o : campaign.analyze_options)
-    analyze_options += " " + shell_quoted(o);
-  std::ostringstream s;
-  s << "#!/bin/bash\n"
-    << "# Slurm job array for campaign '" << campaign.name << "' (" << campaign.runs.size()
-    << " runs): array task i runs line i+1 of runs.txt.\n"
-    << "# Written by `softgrain sweep --dry-run`; docs/campaigns.md. Submit it from this folder:\n"
-    << "#   sbatch slurm-array.sh\n"
-    << "# and when the tasks are done, gather the results (campaign.csv, mu_map.png):\n"
-    << "#   softgrain sweep " << fs::absolute(campaign.file).lexically_normal().string()
-    << " --gather\n"
-    << "# A task whose run is finished (analysis/summary.json) does nothing: resubmitting the\n"
-    << "# array redoes only the unfinished runs.\n"
-    << "#SBATCH --job-name=" << campaign.name << "\n"
-    << "#SBATCH --array=0-" << campaign.runs.size() - 1 << "\n"
-    << "#SBATCH --cpus-per-task=" << threads << "\n"
-    << "#SBATCH --output=slurm-%A_%a.out\n"
-    << "set -euo pipefail\n"
-    << "cd \"${SLURM_SUBMIT_DIR:-.}\"\n"
-    << "SOFTGRAIN=\"${SOFTGRAIN:-" << options.executable.string() << "}\"\n"
-    << "threads=\"${SLURM_CPUS_PER_TASK:-" << threads << "}\"\n"
-    << "id=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" runs.txt)\n"
-    << "dir=\"runs/$id\"\n"
-    << "[ -f \"$dir/" << kSummary << "\" ] && exit 0\n";
-  if (options.resume_from_checkpoints)
-    s << "resume=\"\"\n"
-      << "[ -f \"$dir/checkpoint.bin\" ] && [ -f \"$dir/series.csv.partial\" ] && "
-         "resume=\"--resume\"\n"
-      << "\"$SOFTGRAIN\" --threads \"$threads\" run \"$dir/scenario.toml\" -o runs $resume "
-         ">> \"$dir/sweep.log\" 2>&1\n";
-  else
-    s << "\"$SOFTGRAIN\" --threads \"$threads\" run \"$dir/scenario.toml\" -o runs "
-         ">> \"$dir/sweep.log\" 2>&1\n";
-  s << "\"$SOFTGRAIN\" --threads \"$threads\" analyze \"$dir\"" << analyze_options
-    << " >> \"$dir/sweep.log\" 2>&1\n";
-  write_file_atomically(folder / "slurm-array.sh", s.str());
-  fs::permissions(folder / "slurm-array.sh", fs::perms::owner_exec | fs::perms::group_exec,
-                  fs::perm_options::add);
-}
-
 bool python_imports(const std::string& modules) {
   return std::system(
              (std::string(kPython) + " -c 'import " + modules + "' >/dev/null 2>&1").c_str()) == 0;
@@ -209,6 +168,31 @@ void plot(const fs::path& folder, std::ostream* out) {
 
 fs::path campaign_run_folder(const fs::path& campaign_folder, const CampaignRun& run) {
   return campaign_folder / kCampaignRunsFolder / run.id;
+}
+
+bool campaign_run_finished(const fs::path& run_folder) {
+  return fs::exists(run_folder / kSummary);
+}
+
+int sweep_threads(const CampaignDef& campaign, const SweepOptions& options) {
+  const int parallel = options.parallel > 0 ? options.parallel : campaign.parallel;
+  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  return options.threads > 0    ? options.threads
+         : campaign.threads > 0 ? campaign.threads
+                                : std::max(1, cores / parallel);
+}
+
+fs::path campaign_folder(const CampaignDef& campaign, const SweepOptions& options) {
+  const fs::path root = options.output_root.empty() ? campaign.output_root : options.output_root;
+  return fs::absolute(root / campaign.name).lexically_normal();
+}
+
+fs::path prepare_campaign_folder(const CampaignDef& campaign, const SweepOptions& options) {
+  const fs::path folder = campaign_folder(campaign, options);
+  fs::create_directories(folder);
+  write_file_atomically(folder / "campaign.toml", read_text(campaign.file));
+  write_run_scenarios(campaign, folder);
+  return folder;
 }
 
 namespace {
@@ -418,23 +402,18 @@ void report_gathered(const CampaignDef& campaign, const fs::path& folder,
     if (progress.states[i] == RunState::failed)
       out << "  failed: " << campaign.runs[i].id << ": "
           << read_text(campaign_run_folder(folder, campaign.runs[i]) / kFailedMarker);
+  for (std::size_t i = 0; i < campaign.runs.size(); ++i)
+    if (progress.states[i] == RunState::pending)
+      out << "  missing: " << campaign.runs[i].id << " (not finished)\n";
 }
 
 }  // namespace
 
 SweepResult sweep_campaign(const CampaignDef& campaign, const SweepOptions& options) {
   std::ostream* out = options.out;
-  const fs::path root = options.output_root.empty() ? campaign.output_root : options.output_root;
-  const fs::path folder = fs::absolute(root / campaign.name).lexically_normal();
+  const fs::path folder = prepare_campaign_folder(campaign, options);
   const int parallel = options.parallel > 0 ? options.parallel : campaign.parallel;
-  const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  const int threads = options.threads > 0    ? options.threads
-                      : campaign.threads > 0 ? campaign.threads
-                                             : std::max(1, cores / parallel);
-
-  fs::create_directories(folder);
-  write_file_atomically(folder / "campaign.toml", read_text(campaign.file));
-  write_run_scenarios(campaign, folder);
+  const int threads = sweep_threads(campaign, options);
 
   SweepResult result;
   result.folder = folder;
@@ -443,7 +422,18 @@ SweepResult sweep_campaign(const CampaignDef& campaign, const SweepOptions& opti
   CampaignProgress progress = read_progress(campaign, folder);
 
   if (options.mode == SweepOptions::Mode::dry_run) {
-    write_slurm_script(campaign, folder, options, threads);
+    // The script `sweep --slurm` would submit (all runs; it submits only the unfinished).
+    SlurmScriptSpec spec;
+    spec.executable = options.executable;
+    spec.threads = slurm_threads(campaign, options);
+    std::vector<std::size_t> all(campaign.runs.size());
+    for (std::size_t i = 0; i < all.size(); ++i)
+      all[i] = i;
+    spec.array = slurm_array_spec(all, campaign.slurm.max_running);
+    spec.time_limit = campaign.slurm.time;
+    write_file_atomically(folder / kSlurmScriptFile,
+                          slurm_array_script(campaign, campaign.slurm, spec));
+    fs::create_directories(folder / kSlurmOutputFolder);  // sbatch by hand: Slurm won't make it
     if (out) list_runs(campaign, folder, progress, *out);
     count_states(progress, result);
     return result;

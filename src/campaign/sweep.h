@@ -10,7 +10,8 @@
 //     runs/<id>/sweep.failed          present while the last attempt failed: what failed
 //     campaign.csv                    one row per run (campaign_table.h)
 //     mu_map.png                      mu over two parameters (scripts/plot_campaign.py)
-//     slurm-array.sh                  written by --dry-run: one Slurm array task per run
+//     slurm-array.sh                  the Slurm job array (--dry-run, --slurm; slurm_script.h)
+//     slurm-jobs.txt                  the jobs submitted by --slurm (slurm_campaign.h)
 //
 // A run is finished iff runs/<id>/analysis/summary.json exists: `softgrain run` renames
 // series.csv.partial to series.csv only at its end and summary.json is written atomically,
@@ -56,5 +57,20 @@ SweepResult sweep_campaign(const CampaignDef& campaign, const SweepOptions& opti
 // Folder of a run inside the campaign folder.
 std::filesystem::path campaign_run_folder(const std::filesystem::path& campaign_folder,
                                           const CampaignRun& run);
+
+// True iff the run in `run_folder` is finished: its analysis/summary.json exists.
+bool campaign_run_finished(const std::filesystem::path& run_folder);
+
+// The OpenMP threads of each local run: options.threads, else the campaign's `threads`, else
+// cores / parallel.
+int sweep_threads(const CampaignDef& campaign, const SweepOptions& options);
+
+// The campaign folder: <output>/<name>, absolute (options.output_root replaces `output`).
+std::filesystem::path campaign_folder(const CampaignDef& campaign, const SweepOptions& options);
+
+// What every mode does first: the campaign folder with campaign.toml, runs.txt and each run's
+// scenario.toml, refusing a campaign that changed under runs already started. Returns it.
+std::filesystem::path prepare_campaign_folder(const CampaignDef& campaign,
+                                              const SweepOptions& options);
 
 }  // namespace sg
