@@ -123,11 +123,12 @@ void record_job(const fs::path& folder, const std::string& job_id, const std::st
 std::string mu_detail(const fs::path& dir) {
   CampaignRow row;
   try {
-    row.quantities = read_summary_quantities(dir / "analysis" / "summary.json");
+    row.summary = read_summary_record(dir / "analysis" / "summary.json");
   } catch (const Error&) {
     return "";
   }
   const double mu = row_quantity(row, "mu");
+  if (!row.summary.unmeasured.empty()) return "without mu: " + row.summary.unmeasured;
   if (!std::isfinite(mu)) return "mu = -";
   std::ostringstream s;
   s << "mu = " << std::setprecision(3) << mu;
