@@ -11,6 +11,7 @@ struct RunArguments {
   std::string scenario;
   std::string output;
   bool resume = false;
+  bool overwrite = false;
   bool profile = false;
   long max_steps = -1;
 };
@@ -26,6 +27,10 @@ const Registration registration(
                        "output root folder (overrides [output] directory)");
        run->add_flag("--resume", args->resume,
                      "continue a stopped run from <run folder>/checkpoint.bin (same scenario)");
+       run->add_flag("--overwrite", args->overwrite,
+                     "start over in a run folder that holds another scenario's run, removing "
+                     "its outputs (fields/, grains/, series.csv, ...) first")
+           ->excludes("--resume");
        run->add_flag("--profile", args->profile,
                      "show the share of each phase of the step (contacts, internal forces, ...) "
                      "with the progress line; run.log always ends with the profile");
@@ -40,6 +45,7 @@ const Registration registration(
          run_options.progress = &std::cerr;
          run_options.output_root_override = args->output;
          run_options.resume = args->resume;
+         run_options.overwrite = args->overwrite;
          run_options.profile = args->profile;
          run_options.stop_after_steps = args->max_steps;
          const RunSummary summary = run_scenario(scenario, run_options);

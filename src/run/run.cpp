@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <iomanip>
+#include <new>
 #include <sstream>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "model/force_kernel.h"
 #include "run/checkpoint_output.h"
 #include "run/progress_output.h"
+#include "run/run_length.h"
 #include "run/run_log.h"
 #include "run/series_output.h"
 #include "run/snapshot_output.h"
@@ -24,10 +26,12 @@ using clock = std::chrono::steady_clock;
 
 // Checks the name and the folder, removes an old checkpoint unless resuming
 // (io/run_directory.h): a run writes and deletes only inside <output root>/<name>/.
-RunFolder run_folder(const ScenarioDef& scenario, const RunOptions& options) {
+// The folder is locked (io/run_lock.h) for the whole run: a second run there is refused.
+RunFolder run_folder(const ScenarioDef& scenario, const RunOptions& options, RunFolderLock& lock) {
   const std::filesystem::path root =
       options.output_root_override.empty() ? scenario.output_root : options.output_root_override;
-  return RunFolder{prepare_run_directory(root, scenario.name, options.resume)};
+  return RunFolder{prepare_run_directory(root, scenario.name, options.resume, scenario.source,
+                                         options.overwrite, &lock)};
 }
 
 // Checks what a resume needs, then creates the folders of the outputs.
@@ -44,9 +48,10 @@ void prepare_folder(const RunFolder& folder, const ScenarioDef& scenario, bool r
                                         ? " (the run is complete: series.csv is there)"
                                         : ""));
   }
-  std::filesystem::create_directories(folder.dir / "fields");
-  std::filesystem::create_directories(folder.dir / "grains");
-  if (!scenario.contact_laws.empty()) std::filesystem::create_directories(folder.dir / "contacts");
+  // Real folders inside the run folder, never links (io/run_directory.h).
+  make_run_subfolder(folder.dir, "fields");
+  make_run_subfolder(folder.dir, "grains");
+  if (!scenario.contact_laws.empty()) make_run_subfolder(folder.dir, "contacts");
 }
 
 std::string describe_resume(const SolverState& state) {
@@ -85,13 +90,48 @@ void announce_end(std::ostream& out, const Simulation& sim, const RunSummary& su
         << ": mu = -<Fx>/<Fy> = " << mu << " (mean normal force " << normal_force << ")\n";
 }
 
+std::vector<std::string> split_lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    lines.push_back(line);
+  return lines;
+}
+
+// A run stopped by an error (a diverging step, a full disk, memory): run.log, where a user
+// looks first, says where and why (issue #26), then the error goes on to the caller. On a
+// full disk the log may not be writable either: the error still reaches the user.
+[[noreturn]] void stop_with_error(const RunFolder& folder, const ScenarioDef& scenario,
+                                  const Simulation& sim, const std::string& notes,
+                                  const std::exception& error) {
+  std::string why = error.what();
+  if (dynamic_cast<const std::bad_alloc*>(&error)) why = "out of memory (" + why + ")";
+  std::ostringstream note;
+  note << std::setprecision(10) << "# stopped at step " << sim.solver.state().step << ", time "
+       << sim.solver.state().time << ": ";
+  for (char c : why)
+    note << (c == '\n' ? ' ' : c);
+  note << "\n";
+  try {
+    write_run_log(folder.run_log(), scenario, sim,
+                  notes + describe_step_control(sim.controller.statistics()) + note.str());
+  } catch (const std::exception&) {
+    // the original error says more than this one
+  }
+  if (dynamic_cast<const Error*>(&error)) throw;
+  SG_THROW("run '" << scenario.name << "' stopped at step " << sim.solver.state().step << ": "
+                   << why);
+}
+
 }  // namespace
 
 RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) {
   const clock::time_point start = clock::now();
-  const RunFolder folder = run_folder(scenario, options);
+  RunFolderLock lock;
+  const RunFolder folder = run_folder(scenario, options, lock);
   prepare_folder(folder, scenario, options.resume);
   Simulation sim(scenario, options.progress);
+  refuse_endless_run(scenario, sim);
   RunLoopState loop;  // what the outputs have written and when they write next (checkpointed)
   RunContext context{scenario, folder, sim, loop, 1e-12 * scenario.duration};
 
@@ -113,41 +153,51 @@ RunSummary run_scenario(const ScenarioDef& scenario, const RunOptions& options) 
   }
   for (RunObserver* output : outputs)
     output->begin(options.resume);
+  if (!snapshots.resume_note().empty()) {
+    resume_note += snapshots.resume_note();
+    if (options.progress)
+      for (const std::string& line : split_lines(snapshots.resume_note()))
+        *options.progress << "softgrain: warning: " << line.substr(2) << "\n";
+  }
   write_run_log(folder.run_log(), scenario, sim, resume_note);
   if (options.progress) announce_start(*options.progress, sim, options.resume);
 
   // The loop: step, accept or roll back (the controller), let each output observe.
   StepProfile& profile = sim.solver.profile();
   const long first_step = sim.solver.state().step;
-  while (sim.solver.state().time < scenario.duration - context.time_tolerance) {
-    if (options.stop_after_steps >= 0 &&
-        sim.solver.state().step - first_step >= options.stop_after_steps) {
-      summary.completed = false;  // as if killed here: no final snapshot, no rename
-      break;
-    }
-    PhaseTimer timer(profile);
-    const RunInstant now{sim.solver.state().time, sim.solver.state().step};
-    for (RunObserver* output : outputs)
-      output->prepare(now);
-    timer.stamp(StepPhase::outputs);
-    const StepProfile before = profile;
-    const double dt = sim.controller.advance();
-    // The controller's own time: the call less the steps it took (they stamped their phases).
-    timer.stamp(StepPhase::step_control);
-    profile.seconds[static_cast<std::size_t>(StepPhase::step_control)] -=
-        profile.total() - before.total() -
-        (profile[StepPhase::step_control] - before[StepPhase::step_control]);
-    const StepTaken taken{now, dt, sim.solver.state().step == now.step + 1};
-    if (taken.from_start)
+  try {
+    while (sim.solver.state().time < scenario.duration - context.time_tolerance) {
+      if (options.stop_after_steps >= 0 &&
+          sim.solver.state().step - first_step >= options.stop_after_steps) {
+        summary.completed = false;  // as if killed here: no final snapshot, no rename
+        break;
+      }
+      PhaseTimer timer(profile);
+      const RunInstant now{sim.solver.state().time, sim.solver.state().step};
       for (RunObserver* output : outputs)
-        output->commit(taken);
-    for (RunObserver* output : outputs)
-      output->after_step(taken);
-    timer.stamp(StepPhase::outputs);
+        output->prepare(now);
+      timer.stamp(StepPhase::outputs);
+      const StepProfile before = profile;
+      const double dt = sim.controller.advance();
+      // The controller's own time: the call less the steps it took (they stamped their phases).
+      timer.stamp(StepPhase::step_control);
+      profile.seconds[static_cast<std::size_t>(StepPhase::step_control)] -=
+          profile.total() - before.total() -
+          (profile[StepPhase::step_control] - before[StepPhase::step_control]);
+      const StepTaken taken{now, dt, sim.solver.state().step == now.step + 1};
+      if (taken.from_start)
+        for (RunObserver* output : outputs)
+          output->commit(taken);
+      for (RunObserver* output : outputs)
+        output->after_step(taken);
+      timer.stamp(StepPhase::outputs);
+    }
+    if (summary.completed)
+      for (RunObserver* output : outputs)
+        output->finish();
+  } catch (const std::exception& error) {
+    stop_with_error(folder, scenario, sim, resume_note, error);
   }
-  if (summary.completed)
-    for (RunObserver* output : outputs)
-      output->finish();
 
   summary.directory = folder.dir;
   summary.steps = sim.solver.state().step;

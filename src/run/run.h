@@ -28,7 +28,10 @@ struct RunOptions {
   std::filesystem::path
       output_root_override;  // non-empty: replaces the scenario's [output] directory
   bool resume = false;       // continue the run folder from its checkpoint.bin
-  bool profile = false;      // the progress line shows the share of each phase of the step
+  // Starting over: remove the run folder's old outputs first, even another scenario's
+  // (io/run_directory.h); without it a folder of another scenario's run is refused.
+  bool overwrite = false;
+  bool profile = false;  // the progress line shows the share of each phase of the step
   // >= 0: stop after this many steps (of this call), leaving the folder as a killed run
   // leaves it (series.csv.partial, no final snapshot): to test resuming.
   long stop_after_steps = -1;
