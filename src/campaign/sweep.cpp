@@ -12,6 +12,7 @@
 #include "campaign/run_queue.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
+#include "io/run_lock.h"
 #include "scenario/scenario.h"
 
 #ifndef SOFTGRAIN_PLOT_CAMPAIGN_SCRIPT
@@ -285,7 +286,8 @@ ProcessJob run_job(const CampaignDef& campaign, const CampaignRun& run, const fs
     // From scratch: nothing of an interrupted attempt may survive into the new one.
     std::vector<fs::path> stale;
     for (const auto& entry : fs::directory_iterator(dir))
-      if (entry.path().filename() != "scenario.toml") stale.push_back(entry.path());
+      if (entry.path().filename() != "scenario.toml" && entry.path().filename() != kRunLockFile)
+        stale.push_back(entry.path());  // (the lock file stays: io/run_lock.h)
     for (const fs::path& p : stale)
       fs::remove_all(p);
     job.steps.push_back(simulate);
@@ -323,8 +325,16 @@ std::string failure_reason(const JobOutcome& o, const CampaignJobs& jobs, const 
     why << "exited with status " << o.exit_code;
   why << " after " << format_seconds(o.seconds) << "; log: " << (dir / "sweep.log").string();
   if (jobs.resumed[o.job] && !analyze_step) {
-    fs::remove(dir / "checkpoint.bin");
-    why << " (resuming failed: the next sweep starts it from scratch)";
+    // Moved aside (they show what went wrong) and out of the way: with no checkpoint and no
+    // series.csv the next sweep starts the run from scratch, whose clean-up removes them.
+    // (A complete but damaged series.csv used to make every next sweep re-analyse it.)
+    for (const char* name : {"checkpoint.bin", "series.csv", "series.csv.partial"}) {
+      std::error_code error;
+      if (fs::exists(dir / name, error))
+        fs::rename(dir / name, dir / (std::string(name) + ".damaged"), error);
+    }
+    why << " (resuming failed: checkpoint.bin and series.csv* moved aside as *.damaged; the "
+           "next sweep starts it from scratch)";
   }
   return why.str();
 }

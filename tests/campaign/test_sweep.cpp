@@ -167,5 +167,89 @@ TEST(Sweep, KilledSweepResumesWithoutRedoingFinishedRuns) {
   expect_complete_table(folder);
 }
 
+// Issue #26: `softgrain sweep` killed alone (SIGKILL to the sweep, not its process group)
+// while a run is mid-way and past a checkpoint, restarted at once: the orphaned run used to go
+// on writing its folder beside the restarted sweep's resume of the same run (a corrupt
+// series.csv, a run failed for good). Now the run dies with its sweep (PR_SET_PDEATHSIG) and a
+// run folder is locked while a run writes it; the campaign completes with every run's files
+// byte-identical to those of an uninterrupted campaign (but run.log, which notes the resume,
+// sweep.log, and the run folder's path in analysis/summary.json).
+void write_long_campaign(const fs::path& dir) {
+  std::ofstream(dir / "tiny.toml") << std::string(R"(name = "tiny"
+[time]
+duration = 0.4
+[output]
+series_period = 0.005
+field_period = 0.05
+checkpoint_period = 0.02
+)") + scenes::kTinyScenarioBody;
+  std::ofstream(dir / "campaign.toml") << R"(name = "c"
+scenario = "tiny.toml"
+output = "out"
+parallel = 1
+threads = 1
+analyze_options = ["--no-agglomerates"]
+[grid]
+"contact_laws.0.friction" = [0.1, 0.4]
+)";
+}
+
+std::string bytes(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(Sweep, SweepKilledAloneMidRunAndRestartedAtOnceGivesIdenticalRuns) {
+  const fs::path reference = fresh_dir("reference");
+  write_long_campaign(reference);
+  ASSERT_EQ(wait_exit_code(start_sweep(reference / "campaign.toml", reference / "sweep.out")), 0)
+      << read(reference / "sweep.out");
+
+  const fs::path dir = fresh_dir("killed-alone");
+  write_long_campaign(dir);
+  const fs::path run = dir / "out" / "c" / "runs" / "run-000_friction=0.1";
+  const pid_t pid = start_sweep(dir / "campaign.toml", dir / "first.out");
+  const auto deadline = std::chrono::steady_clock::now() + 60s;
+  while (!fs::exists(run / "checkpoint.bin") && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(2ms);
+  ASSERT_TRUE(fs::exists(run / "checkpoint.bin")) << read(dir / "first.out");
+  ::kill(pid, SIGKILL);  // the sweep alone: its run is not signalled by us
+  wait_exit_code(pid);
+  const int code = wait_exit_code(start_sweep(dir / "campaign.toml", dir / "second.out"));
+  const std::string second = read(dir / "second.out");
+  ASSERT_EQ(code, 0) << second << read(run / "sweep.log");
+  EXPECT_EQ(second.find("FAILED"), std::string::npos) << second;
+  // The kill came mid-run, past a checkpoint: the restarted sweep resumed the run.
+  EXPECT_NE(second.find("run-000_friction=0.1 resumed from its checkpoint"), std::string::npos)
+      << second;
+
+  int compared = 0;
+  const fs::path reference_runs = reference / "out" / "c" / "runs";
+  for (const auto& entry : fs::recursive_directory_iterator(reference_runs)) {
+    if (!entry.is_regular_file()) continue;
+    const fs::path relative = fs::relative(entry.path(), reference_runs);
+    const std::string name = relative.filename().string();
+    if (name == "run.log" || name == "sweep.log") continue;
+    const fs::path other = dir / "out" / "c" / "runs" / relative;
+    EXPECT_TRUE(fs::exists(other)) << relative << " is missing";
+    // analysis/summary.json names its run folder: the same once the roots are swapped.
+    std::string expected = bytes(entry.path());
+    for (auto at = expected.find(reference.string()); at != std::string::npos;
+         at = expected.find(reference.string(), at + dir.string().size()))
+      expected.replace(at, reference.string().size(), dir.string());
+    EXPECT_TRUE(expected == bytes(other)) << relative << " differs";
+    ++compared;
+  }
+  EXPECT_GT(compared, 20);
+  const fs::path runs = dir / "out" / "c" / "runs";
+  for (const auto& entry : fs::recursive_directory_iterator(runs)) {
+    if (!entry.is_regular_file()) continue;
+    EXPECT_TRUE(fs::exists(reference_runs / fs::relative(entry.path(), runs)))
+        << entry.path() << " is extra";
+  }
+}
+
 }  // namespace
 }  // namespace sg
