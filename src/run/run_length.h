@@ -16,6 +16,11 @@ namespace sg {
 inline constexpr double kMaxRunSteps = 1e9;
 inline constexpr double kMaxRunNodeSteps = 3e14;
 
+// Why the run cannot run at all ("" if it can): a first step of 0 or not finite (a young of
+// 1e90 with some damping: the damped limit underflows), naming the body that sets it. Refused even
+// with allow_long_run.
+std::string zero_step_problem(const Simulation& simulation);
+
 // Why the run is refused ("" if it is not): the steps, node-steps and the limit passed.
 std::string run_length_problem(const ScenarioDef& scenario, const Simulation& simulation);
 

@@ -123,6 +123,14 @@ long TomlReader::integer(const std::string& key, long fallback) const {
   fail(key, "expected an integer");
 }
 
+long TomlReader::integer_in(const std::string& key, long fallback, long min, long max) const {
+  const long v = integer(key, fallback);
+  if (v < min || v > max)
+    fail(key, "expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) +
+                  "], got " + std::to_string(v));
+  return v;
+}
+
 std::string TomlReader::string(const std::string& key) const {
   const toml::node* n = find(key);
   if (!n) fail(key, "required string is missing");

@@ -319,6 +319,20 @@ normal_stiffness = 1e15
   EXPECT_EQ(o.exit_code, 0) << o.err;
 }
 
+TEST(HostileCli, AStableStepOfZeroIsRefusedNamingTheBodyEvenWhenLongRunsAreAllowed) {
+  // young = 1e90 with damping: the damped step limit underflows to 0 (the run would never end).
+  const std::string text =
+      scenes::replace_once(two_discs("zero"), "young = 10.0", "young = 1e90\ndamping = 0.01");
+  for (const std::string& t :
+       {text,
+        scenes::replace_once(text, "duration = 0.5", "duration = 0.5\nallow_long_run = true")}) {
+    const fs::path scenario = scenes::write_text_file(temp_root() / "zero.toml", t);
+    expect_refused(softgrain({"run", scenario.string(), "-o", (temp_root() / "zero-out").string()}),
+                   "zero.toml: the stable step estimate is 0 (body 'grain_0', highest frequency ",
+                   "zero step");
+  }
+}
+
 TEST(HostileCli, ResumeDropsSnapshotsDeletedSinceAndSaysSo) {
   const fs::path scenario =
       scenes::write_text_file(temp_root() / "gone.toml",

@@ -7,6 +7,8 @@
 #include <sys/stat.h>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "core/error.h"
@@ -195,6 +197,34 @@ TEST(HostileInputs, NumbersBeyondWhatARunHoldsAreRefused) {
              "most 1e+100");
   EXPECT_HAS(grains_file_error("x,y,diameter\n0,0,1e120\n"),
              "grains.csv:2: column 3 'diameter': expected a number of magnitude at most 1e+100");
+}
+
+// examples/shear-cell-small.toml with `from` replaced by `to`.
+std::string shear_cell_small(const std::string& from, const std::string& to) {
+  std::ifstream in(fs::path(SOFTGRAIN_SOURCE_DIR) / "examples" / "shear-cell-small.toml");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return scenes::replace_once(text.str(), from, to);
+}
+
+TEST(HostileInputs, MisleadingMessagesNowNameTheKey) {
+  // A node spacing of 1e90 used to say that two contour points of grain_0 "coincide".
+  const std::string spacing = scenes::scenario_error(
+      temp_root(), shear_cell_small("node_spacing = 0.15", "node_spacing = 1e90"));
+  EXPECT_HAS(spacing,
+             "key 'discretization.node_spacing': node spacing 1e+90 is too large for "
+             "the generated grains of diameter down to 0.85: need node_spacing <= "
+             "diameter / 2 = 0.425");
+  const std::string disc = "[[grains]]\ncenter = [0.0, 0.0]\nradius = 0.5\nmaterial = \"soft\"\n";
+  EXPECT_HAS(scenes::scenario_error(
+                 temp_root(), scenes::replace_once(std::string(kHead) + disc, "node_spacing = 0.1",
+                                                   "node_spacing = 0.6")),
+             "key 'discretization.node_spacing': node spacing 0.6 is too large for grain "
+             "'grain_0' of diameter 1: need node_spacing <= diameter / 2 = 0.5");
+  // A grain count of 1e11 overflowed an int (a hang or bad_alloc).
+  EXPECT_HAS(
+      scenes::scenario_error(temp_root(), shear_cell_small("grains = 60", "grains = 100000000000")),
+      "key 'shear_cell.grains': expected an integer in [1, 1000000], got 100000000000");
 }
 
 TEST(HostileInputs, SpecialFilesAreRefusedByTypeBeforeOpening) {
