@@ -12,6 +12,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "run/run.h"
 #include "scenario/scenario.h"
 #include "scenes/scenario_files.h"
 
@@ -221,10 +222,55 @@ TEST(HostileInputs, MisleadingMessagesNowNameTheKey) {
                                                    "node_spacing = 0.6")),
              "key 'discretization.node_spacing': node spacing 0.6 is too large for grain "
              "'grain_0' of diameter 1: need node_spacing <= diameter / 2 = 0.5");
+  // An absurd cohesion: its tensile reach makes the contact cutoff longer than the periodic
+  // cell; the run used to stop at step 0 on "the periodic cell (length 20) must be longer than
+  // 2 (cutoff + skin) + the widest segment = 1.5e+57", naming neither the law nor the key.
+  const std::string cohesion =
+      scenes::scenario_error(temp_root(), shear_cell_small("cohesion = 0.1 ", "cohesion = 1e60 "));
+  EXPECT_HAS(cohesion, ".cohesion': the contact cutoff + skin = ");
+  EXPECT_HAS(cohesion,
+             "is not below half the periodic cell (length 20): it follows this law's "
+             "tensile reach ");
+  EXPECT_HAS(cohesion, "bad.toml:43: key 'contact_laws[");
   // A grain count of 1e11 overflowed an int (a hang or bad_alloc).
   EXPECT_HAS(
       scenes::scenario_error(temp_root(), shear_cell_small("grains = 60", "grains = 100000000000")),
       "key 'shear_cell.grains': expected an integer in [1, 1000000], got 100000000000");
+}
+
+TEST(HostileInputs, AnExplodingBodyIsNamedInPlaceOfTheBroadPhaseLimit) {
+  // A spin of 1e30 tears the deformable disc apart in its first step: the run used to stop on
+  // the broad phase's "the periodic cell must be longer than ... the widest segment", naming
+  // no body.
+  const std::string text = std::string(kHead) + R"([periodic]
+x_min = -5.0
+x_max = 5.0
+[[grains]]
+center = [0.0, 0.0]
+radius = 0.5
+material = "soft"
+spin = 1e30
+[[grains]]
+center = [2.0, 0.0]
+radius = 0.5
+material = "soft"
+[[contact_laws]]
+materials = ["soft", "soft"]
+law = "frictionless"
+normal_stiffness = 100.0
+)";
+  const ScenarioDef s = load_scenario(scenes::write_text_file(temp_root() / "spin.toml", text));
+  RunOptions options;
+  options.output_root_override = temp_root() / "runs";
+  options.stop_after_steps = 5;
+  try {
+    run_scenario(s, options);
+    ADD_FAILURE() << "the exploding disc ran";
+  } catch (const Error& e) {
+    EXPECT_HAS(std::string(e.what()), "body 'grain_0', contour segment ");
+    EXPECT_HAS(std::string(e.what()), "more than the periodic cell (length 10) allows");
+    EXPECT_HAS(std::string(e.what()), "the body has exploded");
+  }
 }
 
 TEST(HostileInputs, SpecialFilesAreRefusedByTypeBeforeOpening) {
