@@ -60,6 +60,25 @@ std::string stray_writes(const Sandbox& s, const std::set<std::string>& inputs) 
   return "";
 }
 
+// Empty if no series.csv(.partial) of the output root holds a non-finite number (a run that
+// "ran" while writing NaN energies, as a density of 1e300 did, is a failure: issue #26).
+std::string non_finite_output(const Sandbox& s) {
+  for (const std::string& run : entries(s.output_root()))
+    for (const char* name : {"series.csv", "series.csv.partial"}) {
+      std::ifstream in(s.output_root() / run / name, std::ios::binary);
+      int line_number = 0;
+      for (std::string line; std::getline(in, line);) {
+        ++line_number;
+        std::istringstream cells(line);
+        for (std::string cell; std::getline(cells, cell, ',');)
+          if (cell == "nan" || cell == "-nan" || cell == "inf" || cell == "-inf")
+            return "wrote '" + cell + "' in " + run + "/" + name + " line " +
+                   std::to_string(line_number);
+      }
+    }
+  return "";
+}
+
 struct Exit {
   bool timed_out = false;
   int status = 0;
@@ -152,11 +171,20 @@ CaseResult run_case(const Sandbox& s, const fs::path& executable,
     } else {
       r.outcome = CaseResult::Outcome::refused;
       r.detail = last;
+      // A CSV file's messages name its line and column instead of a key.
       r.names_file = last.find(file_name) != std::string::npos &&
                      (last.find("key '") != std::string::npos ||
-                      last.find("TOML syntax error") != std::string::npos);
+                      last.find("TOML syntax error") != std::string::npos ||
+                      last.find(": column ") != std::string::npos ||
+                      last.find("header row") != std::string::npos ||
+                      last.find("no data rows") != std::string::npos);
     }
   }
+  if (r.outcome == CaseResult::Outcome::ran)
+    if (const std::string bad = non_finite_output(s); !bad.empty()) {
+      r.outcome = CaseResult::Outcome::failed;
+      r.detail = bad;
+    }
   if (const std::string stray = stray_writes(s, inputs); !stray.empty()) {
     r.outcome = CaseResult::Outcome::failed;
     r.detail = stray + (r.detail.empty() ? "" : "; " + r.detail);

@@ -3,7 +3,9 @@
 // run (`softgrain run --max-steps 2`, or `softgrain sweep --dry-run` for a campaign), one
 // sandbox per case and a time bound per case. Every case must run (exit 0) or be refused
 // (exit 1, with exactly one "softgrain: error:" line, the last one); never crash, hang or
-// write anywhere but its run folder <output root>/<name>/ (fuzz/case_runner.h).
+// write anywhere but its run folder <output root>/<name>/, nor write a non-finite number in
+// series.csv (fuzz/case_runner.h). A scenario that names CSV files (grains, contour, profile)
+// also gets as many cases mutating each of them (fuzz/mutations.h, csv_mutations_of).
 //
 //   scenario_fuzzer SOFTGRAIN EXAMPLES_DIR
 // Environment (CI uses the defaults):
@@ -43,6 +45,20 @@ std::string read_text(const fs::path& p) {
   std::ostringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+// The CSV files of `examples` that a scenario's text names ("grains.csv" in any key).
+std::vector<fs::path> csv_files_named(const std::string& text, const fs::path& examples) {
+  std::vector<fs::path> found;
+  for (std::size_t at = text.find(".csv\""); at != std::string::npos;
+       at = text.find(".csv\"", at + 1)) {
+    const std::size_t open = text.rfind('"', at);
+    if (open == std::string::npos) continue;
+    const fs::path f = examples / text.substr(open + 1, at + 4 - open - 1);
+    if (fs::is_regular_file(f) && std::find(found.begin(), found.end(), f) == found.end())
+      found.push_back(f);
+  }
+  return found;
 }
 
 bool is_campaign(const std::string& text) {
@@ -95,17 +111,43 @@ int main(int argc, char** argv) {
     if (!all && cases.size() > per_file) cases.resize(per_file);
     const std::string name = file.filename().string();
     std::vector<std::string> args;
-    std::vector<fs::path> companions;
+    std::vector<fs::path> companions, csv_files;
     if (is_campaign(text)) {
       args = {"sweep", name, "-o", "../root", "--dry-run", "--no-plot"};
       for (const fs::path& f : files)
         if (f != file) companions.push_back(f);  // the base scenario it names
     } else {
       args = {"run", name, "-o", "../root", "--max-steps", "2", "--threads", "1"};
+      csv_files = csv_files_named(text, examples);  // the data files it points to
+      companions = csv_files;
+    }
+    // The cases: mutations of the file itself, then of each CSV file it names (issue #26),
+    // with the file itself intact; `target` is the file a case mutates.
+    struct Case {
+      Mutation mutation;
+      std::string target;
+      std::vector<fs::path> companions;
+    };
+    std::vector<Case> all_cases;
+    for (Mutation& m : cases)
+      all_cases.push_back({std::move(m), name, companions});
+    for (const fs::path& csv : csv_files) {
+      std::vector<Mutation> csv_cases = csv_mutations_of(read_text(csv));
+      std::shuffle(csv_cases.begin(), csv_cases.end(), random);
+      if (!all && csv_cases.size() > per_file) csv_cases.resize(per_file);
+      std::vector<fs::path> others = {file};
+      for (const fs::path& c : companions)
+        if (c != csv) others.push_back(c);
+      for (Mutation& m : csv_cases) {
+        m.what = csv.filename().string() + ": " + m.what;
+        all_cases.push_back({std::move(m), csv.filename().string(), others});
+      }
     }
     int file_failed = 0;
-    for (const Mutation& m : cases) {
-      const CaseResult r = run_case(sandbox, executable, args, name, m.text, companions, timeout);
+    for (const Case& c : all_cases) {
+      const Mutation& m = c.mutation;
+      const CaseResult r =
+          run_case(sandbox, executable, args, c.target, m.text, c.companions, timeout);
       if (r.seconds > counts.slowest) {
         counts.slowest = r.seconds;
         counts.slowest_case = name + " " + m.what;
@@ -129,8 +171,9 @@ int main(int argc, char** argv) {
           break;
       }
     }
-    std::cout << name << ": " << cases.size() << " of " << total << " mutations, " << file_failed
-              << " failed\n"
+    std::cout << name << ": " << all_cases.size() << " cases (" << cases.size() << " of " << total
+              << " mutations of the file, " << all_cases.size() - cases.size()
+              << " of its CSV files), " << file_failed << " failed\n"
               << std::flush;
   }
   fs::remove_all(sandbox.root);
