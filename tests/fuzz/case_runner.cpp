@@ -9,6 +9,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <string_view>
 #include <thread>
 
 namespace sg::fuzz {
@@ -79,6 +80,23 @@ std::string non_finite_output(const Sandbox& s) {
   return "";
 }
 
+// Empty if every file that a .pvd of the output root lists exists (a resumed run whose
+// snapshots were deleted listed them all the same: issue #26).
+std::string missing_snapshots(const Sandbox& s) {
+  for (const std::string& run : entries(s.output_root()))
+    for (const char* index : {"fields.pvd", "contacts.pvd"}) {
+      const std::string text = read_text(s.output_root() / run / index);
+      constexpr std::string_view kFile = "file=\"";
+      for (auto at = text.find(kFile); at != std::string::npos; at = text.find(kFile, at + 1)) {
+        const auto begin = at + kFile.size(), end = text.find('"', begin);
+        const std::string file = text.substr(begin, end - begin);
+        if (!fs::is_regular_file(s.output_root() / run / file))
+          return run + "/" + index + " lists " + file + ", which is missing";
+      }
+    }
+  return "";
+}
+
 struct Exit {
   bool timed_out = false;
   int status = 0;
@@ -137,7 +155,7 @@ std::vector<std::string> non_empty_lines(const std::string& text) {
 CaseResult run_case(const Sandbox& s, const fs::path& executable,
                     const std::vector<std::string>& args, const std::string& file_name,
                     const std::string& text, const std::vector<fs::path>& companions,
-                    double timeout_seconds) {
+                    double timeout_seconds, const std::function<void()>& prepare) {
   fs::remove_all(s.case_dir());
   fs::create_directories(s.work_dir());
   fs::create_directories(s.root / "logs");
@@ -147,6 +165,7 @@ CaseResult run_case(const Sandbox& s, const fs::path& executable,
     inputs.insert(c.filename().string());
   }
   std::ofstream(s.work_dir() / file_name, std::ios::binary) << text;
+  if (prepare) prepare();
   const auto start = std::chrono::steady_clock::now();
   const Exit exit = spawn_and_wait(s, executable, args, timeout_seconds);
   CaseResult r;
@@ -181,10 +200,12 @@ CaseResult run_case(const Sandbox& s, const fs::path& executable,
     }
   }
   if (r.outcome == CaseResult::Outcome::ran)
-    if (const std::string bad = non_finite_output(s); !bad.empty()) {
-      r.outcome = CaseResult::Outcome::failed;
-      r.detail = bad;
-    }
+    for (const std::string& bad : {non_finite_output(s), missing_snapshots(s)})
+      if (!bad.empty()) {
+        r.outcome = CaseResult::Outcome::failed;
+        r.detail = bad;
+        break;
+      }
   if (const std::string stray = stray_writes(s, inputs); !stray.empty()) {
     r.outcome = CaseResult::Outcome::failed;
     r.detail = stray + (r.detail.empty() ? "" : "; " + r.detail);
