@@ -409,6 +409,10 @@ SweepResult sweep_campaign(const CampaignDef& campaign, const SweepOptions& opti
                                              : std::max(1, cores / parallel);
 
   fs::create_directories(folder);
+  // One sweep of a campaign at a time: a second one would clean up and start the runs the
+  // first one is running (io/run_lock.h; issue #26).
+  RunFolderLock lock;
+  lock.acquire(folder, std::chrono::milliseconds(3000), kSweepLockFile, "campaign folder");
   write_file_atomically(folder / "campaign.toml", read_text(campaign.file));
   write_run_scenarios(campaign, folder);
 

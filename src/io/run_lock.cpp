@@ -53,9 +53,10 @@ std::string lock_holder(const std::filesystem::path& file) {
   return "another process";
 }
 
-void RunFolderLock::acquire(const std::filesystem::path& dir, std::chrono::milliseconds wait) {
+void RunFolderLock::acquire(const std::filesystem::path& dir, std::chrono::milliseconds wait,
+                            const char* file_name, const char* what) {
   SG_ASSERT(fd_ < 0, "the run folder lock is taken once");
-  const std::filesystem::path file = dir / kRunLockFile;
+  const std::filesystem::path file = dir / file_name;
   fd_ = ::open(file.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
   SG_VERIFY(fd_ >= 0, "cannot open the lock file '"
                           << file.string() << "': " << std::strerror(errno)
@@ -69,9 +70,9 @@ void RunFolderLock::acquire(const std::filesystem::path& dir, std::chrono::milli
       ::close(fd_);
       fd_ = -1;
       SG_VERIFY(error != EWOULDBLOCK,
-                "run folder '" << dir.string() << "' is in use: " << holder
-                               << " is writing it (it holds '" << file.string()
-                               << "'); wait for it to end, or stop it, before running there");
+                what << " '" << dir.string() << "' is in use: " << holder
+                     << " is writing it (it holds '" << file.string()
+                     << "'); wait for it to end, or stop it, before running there");
       SG_THROW("cannot lock '" << file.string() << "': " << std::strerror(error));
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(20));

@@ -13,6 +13,11 @@
 
 namespace sg {
 
+// The name of the lock file in a run folder, and in a campaign folder (a sweep holds the
+// latter while it runs: a second sweep of the same campaign is refused).
+inline constexpr const char* kRunLockFile = "run.lock";
+inline constexpr const char* kSweepLockFile = "sweep.lock";
+
 class RunFolderLock {
  public:
   RunFolderLock() = default;
@@ -22,17 +27,16 @@ class RunFolderLock {
 
   // Takes the lock of the folder `dir` (which must exist), waiting up to `wait` for a holder
   // that is exiting (the child of a killed sweep dies with it, a moment later). Throws
-  // sg::Error naming the folder and the holding process if it stays held.
+  // sg::Error naming the folder (as `what`: "run folder", "campaign folder") and the holding
+  // process if it stays held. `file`: the lock file's name in `dir`.
   void acquire(const std::filesystem::path& dir,
-               std::chrono::milliseconds wait = std::chrono::milliseconds(3000));
+               std::chrono::milliseconds wait = std::chrono::milliseconds(3000),
+               const char* file = kRunLockFile, const char* what = "run folder");
   bool held() const { return fd_ >= 0; }
 
  private:
   int fd_ = -1;
 };
-
-// The name of the lock file in a run folder.
-inline constexpr const char* kRunLockFile = "run.lock";
 
 // "process 1234 (softgrain run ...)" holding an flock on `file` (from /proc/locks), or
 // "another process" when it cannot be told.

@@ -16,6 +16,7 @@
 #include <thread>
 #include <vector>
 
+#include "io/run_lock.h"
 #include "scenes/scenario_files.h"
 
 #include "scenes/tiny_scenario.h"
@@ -165,6 +166,26 @@ TEST(Sweep, KilledSweepResumesWithoutRedoingFinishedRuns) {
   EXPECT_NE(second.find("run-001_young=10_friction=0.4 finished"), std::string::npos) << second;
   EXPECT_NE(second.find("run-003_young=20_friction=0.4 finished"), std::string::npos) << second;
   expect_complete_table(folder);
+}
+
+// Issue #26: a second sweep of a campaign that a sweep is running is refused, naming the
+// process, before it touches the run folders (it would clean up and restart the runs the first
+// one is writing).
+TEST(Sweep, ASecondSweepOfTheSameCampaignIsRefusedNamingTheProcess) {
+  const fs::path dir = fresh_dir("second-sweep");
+  write_campaign(dir, 1);
+  const fs::path folder = dir / "out" / "c";
+  fs::create_directories(folder);
+  RunFolderLock lock;  // this process plays the first sweep
+  lock.acquire(folder, 3000ms, kSweepLockFile, "campaign folder");
+  const int code = wait_exit_code(start_sweep(dir / "campaign.toml", dir / "second.out"));
+  const std::string out = read(dir / "second.out");
+  EXPECT_EQ(code, 1) << out;
+  EXPECT_NE(out.find("softgrain: error: campaign folder '" + folder.string() +
+                     "' is in use: process " + std::to_string(::getpid())),
+            std::string::npos)
+      << out;
+  EXPECT_FALSE(fs::exists(folder / "runs")) << "the refused sweep wrote run folders";
 }
 
 // Issue #26: `softgrain sweep` killed alone (SIGKILL to the sweep, not its process group)
