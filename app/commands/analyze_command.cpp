@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "command_registry.h"
+#include "io/run_directory.h"
 #include "render/plot_runner.h"
 #include "report/analyze_run.h"
 
@@ -104,6 +105,8 @@ const Registration registration(
          o.agglomerates = !a->no_agglomerates;
          o.coherence_threshold = a->threshold;
          if (a->att_thresholds.size() == 2) o.att = {a->att_thresholds[0], a->att_thresholds[1]};
+         // analysis/ must be a real folder: nothing written through a link (io/run_directory.h).
+         refuse_links_in_run_folder(a->run_dir);
          const AnalyzeResult r = analyze_run(a->run_dir, o);
          std::cout << format_summary_table(r.summary);
          if (r.compaction) std::cout << format_compaction_table(*r.compaction);

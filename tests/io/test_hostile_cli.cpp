@@ -225,6 +225,18 @@ TEST(HostileCli, ALinkedSubfolderOfTheRunFolderIsRefusedAndNothingIsWrittenThere
     fs::remove(out / "linked" / sub);
     fs::create_directory(out / "linked" / sub);
   }
+  // analyze and render write analysis/ and render/: refused through a link too.
+  ASSERT_EQ(softgrain({"run", scenario.string(), "-o", out.string()}).exit_code, 0);
+  for (const char* sub : {"analysis", "render"}) {
+    fs::create_directory_symlink(elsewhere, out / "linked" / sub);
+    expect_refused(softgrain({std::string(sub) == "analysis" ? "analyze" : "render",
+                              (out / "linked").string()}),
+                   "run folder entry '" + (out / "linked" / sub).string() +
+                       "' is a symbolic link: refusing to write through it",
+                   sub);
+    EXPECT_TRUE(fs::is_empty(elsewhere)) << sub;
+    fs::remove(out / "linked" / sub);
+  }
   // A linked file too (series.csv.partial is appended to, not replaced).
   fs::create_symlink(elsewhere / "rows.csv", out / "linked" / "series.csv.partial");
   expect_refused(softgrain({"run", scenario.string(), "-o", out.string()}),
