@@ -168,6 +168,36 @@ TEST(Sweep, KilledSweepResumesWithoutRedoingFinishedRuns) {
   expect_complete_table(folder);
 }
 
+// Issue #26: a resume that fails (here a damaged checkpoint) moves checkpoint.bin and
+// series.csv* aside as *.damaged, so that the next sweep starts the run from scratch as the
+// message says, and it completes.
+TEST(Sweep, AFailedResumeMovesTheDamagedFilesAsideAndTheNextSweepStartsOver) {
+  const fs::path dir = fresh_dir("damaged");
+  write_campaign(dir, 1);
+  const fs::path run = dir / "out" / "c" / "runs" / "run-000_young=10_friction=0.1";
+  fs::create_directories(run);
+  std::ofstream(run / "checkpoint.bin") << "not a checkpoint";
+  std::ofstream(run / "series.csv.partial") << "time,step\n0,0\n";
+  wait_exit_code(start_sweep(dir / "campaign.toml", dir / "first.out"));
+  const std::string first = read(dir / "first.out");
+  EXPECT_NE(first.find("run-000_young=10_friction=0.1 resumed from its checkpoint"),
+            std::string::npos)
+      << first;
+  EXPECT_NE(first.find("(resuming failed: checkpoint.bin and series.csv* moved aside as "
+                       "*.damaged; the next sweep starts it from scratch)"),
+            std::string::npos)
+      << first;
+  EXPECT_EQ(read(run / "checkpoint.bin.damaged"), "not a checkpoint");
+  EXPECT_TRUE(fs::exists(run / "series.csv.partial.damaged"));
+  EXPECT_FALSE(fs::exists(run / "checkpoint.bin"));
+  const int code = wait_exit_code(start_sweep(dir / "campaign.toml", dir / "second.out"));
+  const std::string second = read(dir / "second.out");
+  ASSERT_EQ(code, 0) << second;
+  EXPECT_NE(second.find("run-000_young=10_friction=0.1 started"), std::string::npos) << second;
+  EXPECT_FALSE(fs::exists(run / "checkpoint.bin.damaged"));  // the from-scratch clean-up
+  expect_complete_table(dir / "out" / "c");
+}
+
 // Issue #26: a second sweep of a campaign that a sweep is running is refused, naming the
 // process, before it touches the run folders (it would clean up and restart the runs the first
 // one is writing).
