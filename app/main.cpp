@@ -5,7 +5,10 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
+#include <new>
+#include <stdexcept>
 
 #include "command_registry.h"
 #include "core/error.h"
@@ -98,6 +101,21 @@ int main(int argc, char** argv) {
       if (sub->parsed()) return run();
   } catch (const sg::Error& e) {
     std::cerr << "\nsoftgrain: error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // Something a user can cause (a file where a folder should be, no permission, a full
+    // disk): an error, not an "unexpected" one. Its text names the paths.
+    std::cerr << "\nsoftgrain: error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "\nsoftgrain: error: out of memory: the input asks for more memory than "
+                 "this machine has (a count, a size or a node spacing too large for it; "
+                 "`softgrain info` estimates the memory of a scenario)\n";
+    return 1;
+  } catch (const std::length_error& e) {
+    std::cerr << "\nsoftgrain: error: out of memory: the input asks for a container larger "
+                 "than can be allocated ("
+              << e.what() << "; a count, a size or a velocity far too large?)\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "\nsoftgrain: unexpected error: " << e.what() << "\n";

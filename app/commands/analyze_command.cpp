@@ -5,6 +5,7 @@
 
 #include "command_registry.h"
 #include "core/exit_status.h"
+#include "io/run_directory.h"
 #include "render/plot_runner.h"
 #include "report/analyze_run.h"
 
@@ -112,6 +113,8 @@ const Registration registration(
          o.coherence_threshold = a->threshold;
          if (a->att_thresholds.size() == 2) o.att = {a->att_thresholds[0], a->att_thresholds[1]};
          o.steadiness.stress_imbalance = a->stress_imbalance;
+         // analysis/ must be a real folder: nothing written through a link (io/run_directory.h).
+         refuse_links_in_run_folder(a->run_dir);
          const AnalyzeResult r = analyze_run(a->run_dir, o);
          std::cout << format_summary_table(r.summary);
          if (r.compaction) std::cout << format_compaction_table(*r.compaction);

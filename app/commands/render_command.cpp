@@ -7,6 +7,7 @@
 #include "command_registry.h"
 #include "core/error.h"
 #include "core/nearest_name.h"
+#include "io/run_directory.h"
 #include "render/run_folder.h"
 #include "render/snapshot_renderer.h"
 #include "report/analyze_run.h"
@@ -81,6 +82,8 @@ const Registration registration(
          options.movie = !args->no_movie;
          options.robust_range = args->robust;
          const std::filesystem::path dir(args->run_dir);
+         // render/ must be a real folder: nothing written through a link (io/run_directory.h).
+         refuse_links_in_run_folder(dir);
          const RunInfo run = read_run_info(dir);
          if (run.has_scenario) {
            options.periodic = run.periodic;

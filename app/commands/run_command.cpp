@@ -13,6 +13,7 @@ struct RunArguments {
   std::string scenario;
   std::string output;
   bool resume = false;
+  bool overwrite = false;
   bool profile = false;
   long max_steps = -1;
 };
@@ -28,6 +29,10 @@ const Registration registration(
                        "output root folder (overrides [output] directory)");
        run->add_flag("--resume", args->resume,
                      "continue a stopped run from <run folder>/checkpoint.bin (same scenario)");
+       run->add_flag("--overwrite", args->overwrite,
+                     "start over in a run folder that holds another scenario's run, removing "
+                     "its outputs (fields/, grains/, series.csv, ...) first")
+           ->excludes("--resume");
        run->add_flag("--profile", args->profile,
                      "show the share of each phase of the step (contacts, internal forces, ...) "
                      "with the progress line; run.log always ends with the profile");
@@ -43,6 +48,7 @@ const Registration registration(
          run_options.progress_on_terminal = ::isatty(STDERR_FILENO) == 1;
          run_options.output_root_override = args->output;
          run_options.resume = args->resume;
+         run_options.overwrite = args->overwrite;
          run_options.profile = args->profile;
          run_options.stop_after_steps = args->max_steps;
          const RunSummary summary = run_scenario(scenario, run_options);

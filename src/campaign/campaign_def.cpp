@@ -15,6 +15,7 @@
 #include "campaign/slurm_settings_reader.h"
 #include "core/error.h"
 #include "core/file_name.h"
+#include "core/input_file.h"
 
 namespace sg {
 namespace {
@@ -479,9 +480,9 @@ void read_settings(const fs::path& file, const toml::table& doc, CampaignDef& c)
   if (scenario.empty()) fail(file, 1, "scenario", "", "required: the base scenario file");
   c.scenario =
       fs::path(scenario).is_absolute() ? fs::path(scenario) : file.parent_path() / scenario;
-  if (!fs::exists(c.scenario))
+  if (const std::string problem = input_file_problem(c.scenario); !problem.empty())
     fail(file, line_of(*doc.get("scenario")), "scenario", "",
-         "the base scenario '" + c.scenario.string() + "' does not exist");
+         "the base scenario " + shown_path(c.scenario) + " " + problem);
   // Relative to the campaign file, like `scenario`: the campaign folder must not depend on
   // where the command is typed, or a resumed or gathered campaign would start a new one.
   const fs::path output = string_value(file, doc, "output", c.output_root.string());
@@ -705,7 +706,7 @@ void expand_runs(const fs::path& file, const std::vector<Varied>& varied, std::s
 }  // namespace
 
 CampaignDef load_campaign(const fs::path& file) {
-  SG_VERIFY(fs::exists(file), "campaign file '" << file.string() << "' does not exist");
+  require_input_file(file, "campaign file");  // by type before opening (a FIFO would block)
   toml::table doc;
   try {
     doc = toml::parse_file(file.string());

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -64,9 +65,16 @@ pid_t spawn(const ProcessJob& job, std::size_t step) {
   const std::string log = job.log.string();
   const int log_flags = O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC | (step == 0 ? O_TRUNC : 0);
 
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   SG_VERIFY(pid >= 0, "cannot start '" << args[0] << "': " << std::strerror(errno));
   if (pid == 0) {
+    // The child dies with the caller, even when the caller alone is killed (SIGKILL leaves no
+    // chance to terminate it): an orphaned run would go on writing its folder while a
+    // restarted sweep starts the same run there (issue #26). The signal survives exec; the
+    // test after it catches a caller that died before it was set.
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(125);
     const int out = ::open(log.c_str(), log_flags, 0644);
     if (out < 0) {
       write_message(2, "softgrain sweep: cannot open the run's log file\n");

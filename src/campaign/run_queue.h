@@ -8,7 +8,9 @@
 // what a cluster job runs (`softgrain run`), so local and cluster runs behave the same.
 // The children stay in the caller's process group: killing the group (Ctrl-C in a
 // terminal, a batch system's kill) stops them all. SIGINT or SIGTERM sent to the caller
-// alone make it terminate its children and return without starting more.
+// alone make it terminate its children and return without starting more; if the caller dies
+// otherwise (SIGKILL), the kernel kills its children (PR_SET_PDEATHSIG), so that no orphaned
+// run goes on writing a folder that a restarted sweep starts again (issue #26).
 #include <cstddef>
 #include <filesystem>
 #include <functional>

@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "core/exit_status.h"
 #include "io/atomic_file.h"
+#include "io/run_lock.h"
 #include "scenario/scenario.h"
 
 #ifndef SOFTGRAIN_PLOT_CAMPAIGN_SCRIPT
@@ -281,7 +282,8 @@ ProcessJob run_job(const CampaignDef& campaign, const CampaignRun& run, const fs
     // From scratch: nothing of an interrupted attempt may survive into the new one.
     std::vector<fs::path> stale;
     for (const auto& entry : fs::directory_iterator(dir))
-      if (entry.path().filename() != "scenario.toml") stale.push_back(entry.path());
+      if (entry.path().filename() != "scenario.toml" && entry.path().filename() != kRunLockFile)
+        stale.push_back(entry.path());  // (the lock file stays: io/run_lock.h)
     for (const fs::path& p : stale)
       fs::remove_all(p);
     job.steps.push_back(simulate);
@@ -319,8 +321,16 @@ std::string failure_reason(const JobOutcome& o, const CampaignJobs& jobs, const 
     why << "exited with status " << o.exit_code;
   why << " after " << format_seconds(o.seconds) << "; log: " << (dir / "sweep.log").string();
   if (jobs.resumed[o.job] && !analyze_step) {
-    fs::remove(dir / "checkpoint.bin");
-    why << " (resuming failed: the next sweep starts it from scratch)";
+    // Moved aside (they show what went wrong) and out of the way: with no checkpoint and no
+    // series.csv the next sweep starts the run from scratch, whose clean-up removes them.
+    // (A complete but damaged series.csv used to make every next sweep re-analyse it.)
+    for (const char* name : {"checkpoint.bin", "series.csv", "series.csv.partial"}) {
+      std::error_code error;
+      if (fs::exists(dir / name, error))
+        fs::rename(dir / name, dir / (std::string(name) + ".damaged"), error);
+    }
+    why << " (resuming failed: checkpoint.bin and series.csv* moved aside as *.damaged; the "
+           "next sweep starts it from scratch)";
   }
   return why.str();
 }
@@ -411,6 +421,12 @@ void report_gathered(const CampaignDef& campaign, const fs::path& folder,
 
 SweepResult sweep_campaign(const CampaignDef& campaign, const SweepOptions& options) {
   std::ostream* out = options.out;
+  // One sweep of a campaign at a time: a second one would clean up and start the runs the
+  // first one is running (io/run_lock.h; issue #26).
+  fs::create_directories(campaign_folder(campaign, options));
+  RunFolderLock lock;
+  lock.acquire(campaign_folder(campaign, options), std::chrono::milliseconds(3000), kSweepLockFile,
+               "campaign folder");
   const fs::path folder = prepare_campaign_folder(campaign, options);
   const int parallel = options.parallel > 0 ? options.parallel : campaign.parallel;
   const int threads = sweep_threads(campaign, options);

@@ -125,6 +125,24 @@ void ContactSystem::check_finite_positions(const Model& model) const {
     }
 }
 
+void ContactSystem::check_segment_widths(const Model& model) const {
+  const double period = model.x_max - model.x_min;
+  const double allowed = period - 2.0 * (broad_phase_.params().cutoff + broad_phase_.params().skin);
+  if (!(allowed > 0.0)) return;  // the reach itself: the broad phase says so (and the scenario)
+  for (const Body& body : model.bodies)
+    for (int k = body.contour_begin; k < body.contour_end; ++k) {
+      const auto s = static_cast<std::size_t>(k);
+      const double width = std::abs(segment_end_[s].x() - segment_start_[s].x());
+      if (!(width < allowed))
+        SG_THROW("body '" << body.name << "', contour segment " << k - body.contour_begin
+                          << " spans " << width << " in x, more than the periodic cell (length "
+                          << period << ") allows (" << allowed
+                          << " = the period less 2 (cutoff + skin)): the body has exploded; "
+                             "check its material and the contact laws acting on it (cohesion, "
+                             "normal_stiffness), or the step");
+    }
+}
+
 ContactStepResult ContactSystem::add_contact_forces(Model& model, double time_step) {
   // The run's first evaluation (no previous positions; also after a restore of the state
   // before it): where bonded laws form their initial bonds.
@@ -133,7 +151,10 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model, double time_st
   if (damped_ && body_mass_.empty()) update_body_masses(model);
   update_geometry(model);
   const BroadPhaseInput input{positions_, node_body_, segment_start_, segment_end_, segment_body_};
-  if (broad_phase_.needs_rebuild(input)) broad_phase_.build(input);
+  if (broad_phase_.needs_rebuild(input)) {
+    if (model.periodic_x) check_segment_widths(model);
+    broad_phase_.build(input);
+  }
   const std::span<const ContactCandidate> candidates = broad_phase_.candidates();
   group_candidates(candidates);
 

@@ -162,6 +162,10 @@ class ContactSystem {
   void update_geometry(const Model& model);
   // Throws sg::Error naming the body and contour point of the first non-finite position.
   void check_finite_positions(const Model& model) const;
+  // Periodic models: throws sg::Error naming the body and contour segment wider in x than the
+  // period allows (a body that exploded; the broad phase would only say that the cell is too
+  // short for "the widest segment", issue #26).
+  void check_segment_widths(const Model& model) const;
   void group_candidates(std::span<const ContactCandidate> candidates);
   // Narrow phase and law of one group (parallel over groups: writes only its own slots).
   void evaluate_group(const Model& model, std::span<const ContactCandidate> candidates,

@@ -30,6 +30,8 @@ std::string plain_file_name_problem(std::string_view name) {
   std::string why;
   if (name.empty()) {
     why = "it is empty";
+  } else if (name.size() > 255) {  // NAME_MAX: the file system would refuse it
+    why = "it is " + std::to_string(name.size()) + " bytes long, a file name holds at most 255";
   } else if (name == "." || name == "..") {
     why = "it names a folder itself or its parent";
   } else {

@@ -1,8 +1,10 @@
 #include "io/atomic_file.h"
 
 #include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 
 #include "core/error.h"
@@ -35,17 +37,36 @@ void write_file_atomically(const std::filesystem::path& path,
   }
   std::filesystem::path temporary = path;
   temporary += ".tmp";
-  {
+  // A leftover of a killed run, or a symbolic link someone put there: removed (the link, not
+  // what it points to), so that the new file is created here and nothing is written through a
+  // link (issue #26).
+  std::filesystem::remove(temporary, error);
+  // On any failure (a full disk) the half-written temporary is removed: nothing is left
+  // behind but the previous complete file (issue #26).
+  auto remove_temporary = [&] {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+  };
+  try {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     SG_VERIFY(out, "cannot open '" << temporary.string() << "' for writing");
+    errno = 0;
     write(out);
     out.flush();
-    SG_VERIFY(out, "failed writing '" << temporary.string() << "' (disk full?)");
+    if (out) out.close();
+    SG_VERIFY(out, "failed writing '" << temporary.string() << "': "
+                                      << (errno != 0 ? std::strerror(errno) : "disk full?"));
+  } catch (const Error&) {
+    remove_temporary();
+    throw;
+  } catch (const std::exception& e) {  // the writer's own failure (an allocation)
+    remove_temporary();
+    SG_THROW("failed writing '" << temporary.string() << "': " << e.what());
   }
   kill_here_if_asked();
   std::filesystem::rename(temporary, path, error);
   if (error) {
-    std::filesystem::remove(temporary);
+    remove_temporary();
     SG_THROW("cannot rename '" << temporary.string() << "' to '" << path.string()
                                << "': " << error.message());
   }

@@ -39,6 +39,9 @@ struct RunOptions {
   // false: no run folder and none of the run's own outputs (no file is written); the
   // observers below still see the loop. A resume then needs `resume_checkpoint`.
   bool write_outputs = true;
+  // Starting over: remove the run folder's old outputs first, even another scenario's
+  // (io/run_directory.h); without it a folder of another scenario's run is refused.
+  bool overwrite = false;
   bool profile = false;  // the progress line shows the share of each phase of the step
   // >= 0: stop after this many steps (of this call), leaving the folder as a killed run
   // leaves it (series.csv.partial, no final snapshot): to test resuming.

@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <iomanip>
+#include <new>
 #include <sstream>
 
 #include "core/error.h"
@@ -10,6 +11,7 @@
 #include "model/force_kernel.h"
 #include "run/checkpoint_output.h"
 #include "run/progress_output.h"
+#include "run/run_length.h"
 #include "run/run_log.h"
 #include "run/series_output.h"
 #include "run/snapshot_output.h"
@@ -34,9 +36,10 @@ void prepare_folder(const RunFolder& folder, const ScenarioDef& scenario, bool r
                                         ? " (the run is complete: series.csv is there)"
                                         : ""));
   }
-  std::filesystem::create_directories(folder.dir / "fields");
-  std::filesystem::create_directories(folder.dir / "grains");
-  if (!scenario.contact_laws.empty()) std::filesystem::create_directories(folder.dir / "contacts");
+  // Real folders inside the run folder, never links (io/run_directory.h).
+  make_run_subfolder(folder.dir, "fields");
+  make_run_subfolder(folder.dir, "grains");
+  if (!scenario.contact_laws.empty()) make_run_subfolder(folder.dir, "contacts");
 }
 
 // The checkpoint a resume reads.
@@ -47,12 +50,15 @@ std::filesystem::path resume_checkpoint(const RunFolder& folder, const RunOption
 // Checks the name and the folder, removes an old checkpoint unless resuming
 // (io/run_directory.h): a run writes and deletes only inside <output root>/<name>/. Then
 // checks what a resume needs and creates the folders of the outputs. Without outputs: no
-// folder (an empty path).
-RunFolder open_run_folder(const ScenarioDef& scenario, const RunOptions& options) {
+// folder (an empty path). The folder is locked (io/run_lock.h) while `lock` lives: a second
+// run there is refused.
+RunFolder open_run_folder(const ScenarioDef& scenario, const RunOptions& options,
+                          RunFolderLock& lock) {
   if (!options.write_outputs) return RunFolder{};
   const std::filesystem::path root =
       options.output_root_override.empty() ? scenario.output_root : options.output_root_override;
-  RunFolder folder{prepare_run_directory(root, scenario.name, options.resume)};
+  RunFolder folder{prepare_run_directory(root, scenario.name, options.resume, scenario.source,
+                                         options.overwrite, &lock)};
   prepare_folder(folder, scenario, options.resume, resume_checkpoint(folder, options));
   return folder;
 }
@@ -97,21 +103,32 @@ void announce_end(std::ostream& out, bool terminal, const Simulation& sim,
         << ": mu = -<Fx>/<Fy> = " << mu << " (mean normal force " << normal_force << ")\n";
 }
 
+std::vector<std::string> split_lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    lines.push_back(line);
+  return lines;
+}
+
 }  // namespace
 
 RunSession::RunSession(const ScenarioDef& scenario, const RunOptions& options)
     : scenario_(scenario),
       options_(options),
       start_(clock::now()),
-      folder_(open_run_folder(scenario_, options_)),
+      folder_(open_run_folder(scenario_, options_, lock_)),
       simulation_(std::make_unique<Simulation>(scenario_, options_.progress)),
       context_{scenario_, folder_, *simulation_, loop_, 1e-12 * scenario_.duration} {
   SG_VERIFY(options_.write_outputs || !options_.resume || !options_.resume_checkpoint.empty(),
             "a run without outputs resumes from a checkpoint file: none given");
+  refuse_endless_run(scenario_, *simulation_);
   // The outputs, in the order they observe each step: a checkpoint saves what the series and
   // the snapshots have committed for the same step.
   if (options_.write_outputs) {
-    own_outputs_.push_back(std::make_unique<SnapshotOutput>(context_));
+    auto snapshots = std::make_unique<SnapshotOutput>(context_);
+    snapshots_ = snapshots.get();
+    own_outputs_.push_back(std::move(snapshots));
     auto series = std::make_unique<SeriesOutput>(context_);
     series_ = series.get();
     own_outputs_.push_back(std::move(series));
@@ -133,6 +150,13 @@ RunSession::RunSession(const ScenarioDef& scenario, const RunOptions& options)
   }
   for (RunObserver* observer : observers_)
     observer->begin(options_.resume);
+  // Snapshots the .pvd indexes listed but the folder no longer holds (a resume drops them).
+  if (snapshots_ && !snapshots_->resume_note().empty()) {
+    resume_note_ += snapshots_->resume_note();
+    if (options_.progress)
+      for (const std::string& line : split_lines(snapshots_->resume_note()))
+        *options_.progress << "softgrain: warning: " << line.substr(2) << "\n";
+  }
   if (options_.write_outputs) write_run_log(folder_.run_log(), scenario_, sim, resume_note_);
   if (options_.progress) announce_start(*options_.progress, sim, options_.resume);
   first_step_ = sim.solver.state().step;
@@ -200,7 +224,34 @@ RunSummary RunSession::close() {
   if (options_.progress)
     announce_end(*options_.progress, options_.progress_on_terminal, sim, summary, series_,
                  scenario_.duration);
+  lock_.release();  // the folder is complete (or left as a killed run leaves it)
   return summary;
+}
+
+// A run stopped by an error (a diverging step, a full disk, memory): run.log, where a user
+// looks first, says where and why (issue #26), then the error goes on to the caller. On a
+// full disk the log may not be writable either: the error still reaches the user.
+void RunSession::stop_with_error(const std::exception& error) {
+  const Simulation& sim = *simulation_;
+  std::string why = error.what();
+  if (dynamic_cast<const std::bad_alloc*>(&error)) why = "out of memory (" + why + ")";
+  std::ostringstream note;
+  note << std::setprecision(10) << "# stopped at step " << sim.solver.state().step << ", time "
+       << sim.solver.state().time << ": ";
+  for (const char c : why)
+    note << (c == '\n' ? ' ' : c);
+  note << "\n";
+  if (options_.write_outputs) {
+    try {
+      write_run_log(folder_.run_log(), scenario_, sim,
+                    resume_note_ + describe_step_control(sim.controller.statistics()) + note.str());
+    } catch (const std::exception&) {
+      // the original error says more than this one
+    }
+  }
+  if (dynamic_cast<const Error*>(&error)) throw;
+  SG_THROW("run '" << scenario_.name << "' stopped at step " << sim.solver.state().step << ": "
+                   << why);
 }
 
 void RunSession::write_checkpoint(const std::filesystem::path& path) {

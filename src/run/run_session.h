@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "io/checkpoint.h"
+#include "io/run_lock.h"
 #include "run/run.h"
 #include "run/run_observer.h"
 #include "run/simulation.h"
@@ -24,6 +25,7 @@
 namespace sg {
 
 class SeriesOutput;
+class SnapshotOutput;
 class CheckpointOutput;
 
 class RunSession {
@@ -47,6 +49,11 @@ class RunSession {
   // resumed from it repeats this one bitwise.
   void write_checkpoint(const std::filesystem::path& path);
 
+  // For a caller that caught `error` from step() or close(): run.log records where and why
+  // the run stopped, then the error is rethrown (an sg::Error as it is, anything else as an
+  // sg::Error naming the run and the step).
+  [[noreturn]] void stop_with_error(const std::exception& error);
+
   Simulation& simulation() { return *simulation_; }
   const Simulation& simulation() const { return *simulation_; }
   const ScenarioDef& scenario() const { return scenario_; }
@@ -59,12 +66,14 @@ class RunSession {
   ScenarioDef scenario_;
   RunOptions options_;
   clock::time_point start_;
+  RunFolderLock lock_;  // held from before the folder is prepared to the session's end
   RunFolder folder_;
   std::unique_ptr<Simulation> simulation_;
   RunLoopState loop_;  // what the outputs have written and when they write next (checkpointed)
   RunContext context_;
   std::vector<std::unique_ptr<RunObserver>> own_outputs_;
-  SeriesOutput* series_ = nullptr;           // in own_outputs_; null without outputs
+  SnapshotOutput* snapshots_ = nullptr;      // in own_outputs_; null without outputs
+  SeriesOutput* series_ = nullptr;           // idem
   CheckpointOutput* checkpoints_ = nullptr;  // idem
   std::vector<RunObserver*> observers_;      // own outputs, then RunOptions::observers
   Checkpoint checkpoint_scratch_;            // write_checkpoint()'s buffers

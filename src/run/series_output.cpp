@@ -1,7 +1,9 @@
 #include "run/series_output.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <iomanip>
 
 #include "core/error.h"
@@ -100,10 +102,11 @@ void SeriesOutput::commit(const StepTaken& step) {
 
 void SeriesOutput::append_row() {
   const std::string text = row_.str();
+  errno = 0;
   file_.write(text.data(), static_cast<std::streamsize>(text.size()));
   file_.flush();
-  SG_VERIFY(file_,
-            "failed writing '" << context_.folder.partial_series().string() << "' (disk full?)");
+  SG_VERIFY(file_, "failed writing '" << context_.folder.partial_series().string() << "': "
+                                      << (errno != 0 ? std::strerror(errno) : "disk full?"));
   context_.loop.series_bytes += text.size();
   row_.str("");
 }

@@ -14,10 +14,43 @@ SnapshotOutput::SnapshotOutput(RunContext& context)
       fields_pvd_(context.folder.dir / "fields.pvd"),
       contacts_pvd_(context.folder.dir / "contacts.pvd") {}
 
+namespace {
+
+using PvdEntries = std::vector<std::pair<double, std::string>>;
+
+// The entries of `entries` whose file is in `dir`; the others are named in `note`.
+PvdEntries present_entries(const std::filesystem::path& dir, const PvdEntries& entries,
+                           const char* index, std::string& note) {
+  PvdEntries kept;
+  std::string missing;
+  std::size_t dropped = 0;
+  for (const auto& entry : entries) {
+    std::error_code error;
+    if (std::filesystem::is_regular_file(dir / entry.second, error)) {
+      kept.push_back(entry);
+    } else if (++dropped <= 3) {
+      missing += (missing.empty() ? "" : ", ") + entry.second;
+    }
+  }
+  if (dropped > 0)
+    note += "# resume: " + std::to_string(dropped) + " of the " + std::to_string(entries.size()) +
+            " snapshots " + index + " listed are missing (" + missing +
+            (dropped > 3 ? ", ..." : "") + "): " + index + " now lists only the files present\n";
+  return kept;
+}
+
+}  // namespace
+
 void SnapshotOutput::begin(bool resumed) {
   if (!resumed) return;
-  fields_pvd_.restore(context_.loop.field_entries);
-  if (context_.simulation.contacts) contacts_pvd_.restore(context_.loop.contact_entries);
+  const std::filesystem::path& dir = context_.folder.dir;
+  RunLoopState& loop = context_.loop;
+  loop.field_entries = present_entries(dir, loop.field_entries, "fields.pvd", resume_note_);
+  fields_pvd_.restore(loop.field_entries);
+  if (context_.simulation.contacts) {
+    loop.contact_entries = present_entries(dir, loop.contact_entries, "contacts.pvd", resume_note_);
+    contacts_pvd_.restore(loop.contact_entries);
+  }
 }
 
 std::string SnapshotOutput::snapshot_name(const char* extension) const {

@@ -33,7 +33,13 @@ class SnapshotOutput : public RunObserver {
   void commit(const StepTaken& step) override;
   void finish() override;
 
+  // After begin(true): "# ..." lines naming the snapshots the checkpoint's .pvd entries list
+  // but the folder no longer holds (deleted since the run stopped); they are dropped from the
+  // indexes, which list only files present (issue #26). "" when every one is there.
+  const std::string& resume_note() const { return resume_note_; }
+
  private:
+  std::string resume_note_;
   RunContext& context_;
   double strain_rate_unit_;  // V/D of a shear cell, else 1 (io/vtk_writer.h global_strain_rate)
   PvdCollection fields_pvd_, contacts_pvd_;

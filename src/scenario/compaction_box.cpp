@@ -233,8 +233,9 @@ CompactionBoxDef read_compaction_box(const TomlReader& t, const std::set<std::st
   CompactionBoxDef b;
   b.width = t.positive("width");
   b.height = t.non_negative("height", 0.0);
-  b.grains = static_cast<int>(t.integer("grains", b.grains));
-  if (b.grains < 1) t.fail("grains", "expected a positive integer");
+  // At most 10^6 grains: a paper-size sample has 2000 to 3000; 10^6 deformable ones would
+  // take over 10^8 nodes.
+  b.grains = static_cast<int>(t.integer_in("grains", b.grains, 1, 1000000));
   for (const TomlReader& ct : t.array_of_tables("components"))
     b.components.push_back(read_grain_component(ct, materials));
   if (b.components.empty())

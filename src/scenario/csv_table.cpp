@@ -1,11 +1,13 @@
 #include "scenario/csv_table.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <set>
 
 #include "core/error.h"
+#include "core/input_file.h"
 
 namespace sg {
 
@@ -35,9 +37,10 @@ std::vector<std::string> split_cells(const std::string& line) {
 CsvTable::CsvTable(const std::filesystem::path& file, std::initializer_list<const char*> known,
                    std::initializer_list<const char*> required)
     : file_(file) {
+  require_input_file(file, "CSV file");  // by type before opening (a FIFO would block)
   std::ifstream in(file);
   SG_VERIFY(in, file.string() << ": cannot open the file");
-  std::string line;
+  std::string line, header;
   int number = 0, header_line = 0;
   while (std::getline(in, line)) {
     ++number;
@@ -45,10 +48,12 @@ CsvTable::CsvTable(const std::filesystem::path& file, std::initializer_list<cons
     if (t.empty() || t[0] == '#') continue;
     if (columns_.empty()) {
       columns_ = split_cells(t);
+      header = t;
       header_line = number;
       continue;
     }
-    Row row{number, split_cells(t)};
+    Row row{number, split_cells(t), 0};
+    row.cells_given = row.cells.size();
     if (row.cells.size() > columns_.size())
       SG_THROW(file.string() << ":" << number << ": column " << columns_.size() + 1 << ": expected "
                              << columns_.size() << " cells (the header's columns), got "
@@ -72,7 +77,7 @@ CsvTable::CsvTable(const std::filesystem::path& file, std::initializer_list<cons
   }
   for (const char* r : required)
     SG_VERIFY(seen.count(r), file.string() << ":" << header_line << ": column '" << r
-                                           << "' is required (header: " << trimmed(line) << ")");
+                                           << "' is required (header: " << header << ")");
   SG_VERIFY(!rows_.empty(), file.string() << ": no data rows after the header");
 }
 
@@ -95,16 +100,26 @@ void CsvTable::fail(const Row& row, const std::string& name, const std::string& 
                           << "': " << message);
 }
 
+std::string CsvTable::short_row_note(const Row& row) const {
+  if (row.cells_given >= columns_.size()) return "";
+  return " (the row has " + std::to_string(row.cells_given) +
+         (row.cells_given == 1 ? " cell" : " cells") + ", the header " +
+         std::to_string(columns_.size()) + " columns)";
+}
+
 bool CsvTable::has(const Row& row, const std::string& name) const {
   return !cell(row, name).empty();
 }
 
 double CsvTable::number(const Row& row, const std::string& name) const {
   const std::string& s = cell(row, name);
-  if (s.empty()) fail(row, name, "required number is missing");
+  if (s.empty()) fail(row, name, "required number is missing" + short_row_note(row));
   char* end = nullptr;
   const double v = std::strtod(s.c_str(), &end);
   if (end != s.c_str() + s.size()) fail(row, name, "expected a number, got '" + s + "'");
+  if (!std::isfinite(v)) fail(row, name, "expected a finite number, got '" + s + "'");
+  if (std::abs(v) > kMaxInputMagnitude)
+    fail(row, name, "expected a number of magnitude at most 1e+100, got '" + s + "'");
   return v;
 }
 
@@ -115,6 +130,8 @@ double CsvTable::number(const Row& row, const std::string& name, double fallback
 double CsvTable::positive(const Row& row, const std::string& name) const {
   const double v = number(row, name);
   if (!(v > 0.0)) fail(row, name, "expected a positive number, got '" + cell(row, name) + "'");
+  if (v < kMinInputMagnitude)
+    fail(row, name, "expected a positive number of at least 1e-100, got '" + cell(row, name) + "'");
   return v;
 }
 

@@ -1,7 +1,9 @@
 #include "scenario/scenario.h"
 
 #include <algorithm>
+#include <optional>
 #include <set>
+#include <sstream>
 
 #include "core/error.h"
 #include "model/kinematics.h"
@@ -46,6 +48,44 @@ void check_contact_laws_cover_materials(const TomlReader& root, const ScenarioDe
   }
 }
 
+// A contact reach (cutoff + skin) of half the periodic cell or more: the broad phase would
+// stop the run at step 0 naming no input ("the periodic cell (length 20) must be longer than
+// 2 (cutoff + skin) + the widest segment = 1.5e+57" for a cohesion of 1e60; issue #26).
+// `reach_law`: the [[contact_laws]] table whose tensile reach is the largest (none: -1).
+void check_contact_reach(const TomlReader& root, const ScenarioDef& s,
+                         const std::vector<TomlReader>& laws, int reach_law,
+                         double cohesive_reach) {
+  const double period = s.periodic_x   ? s.x_max - s.x_min
+                        : s.shear_cell ? s.shear_cell->length
+                                       : 0.0;
+  if (s.contact_laws.empty() || !(period > 0.0)) return;
+  const ContactSettings c = contact_settings(s);
+  const double reach = c.cutoff + c.skin;
+  if (2.0 * reach < period) return;
+  std::ostringstream message;
+  message << "the contact cutoff + skin = " << reach
+          << " is not below half the periodic cell (length " << period << ")";
+  const std::optional<TomlReader> contact = root.table("contact");
+  if (contact && contact->has("cutoff")) contact->fail("cutoff", message.str());
+  if (contact && contact->has("skin")) contact->fail("skin", message.str());
+  // The default cutoff: max(h / 4, 1.5 x the largest tensile reach) (read_contact_settings).
+  if (reach_law < 0 || 0.25 * s.discretization.mesh.spacing >= 1.5 * cohesive_reach) {
+    const std::optional<TomlReader> d = root.table("discretization");
+    message << ": it follows the node spacing (cutoff = node_spacing / 4)";
+    if (d && d->has("node_spacing")) d->fail("node_spacing", message.str());
+    root.fail("contact_laws", message.str());
+  }
+  const TomlReader& law = laws[static_cast<std::size_t>(reach_law)];
+  message << ": it follows this law's tensile reach " << cohesive_reach
+          << " (from its cohesion or adhesion and normal_stiffness, its critical_opening or "
+             "bond_gap); expected a reach below the period / 6 = "
+          << period / 6.0;
+  for (const char* key :
+       {"cohesion", "adhesion", "critical_opening", "bond_gap", "normal_stiffness"})
+    if (law.has(key)) law.fail(key, message.str());
+  law.fail("law", message.str());
+}
+
 // The scenario `document` holds, checked (`file` names it in messages).
 ScenarioDef read_scenario(const TomlDocument& document, const std::filesystem::path& file) {
   const TomlReader root = document.root();
@@ -71,17 +111,23 @@ ScenarioDef read_scenario(const TomlDocument& document, const std::filesystem::p
   read_grains(root, s, material_names, body_names);
   read_walls(root, s, material_names, body_names);
   double cohesive_reach = 0.0;
-  for (const TomlReader& t : root.array_of_tables("contact_laws")) {
+  int reach_law = -1;  // the law of the largest tensile reach
+  const std::vector<TomlReader> laws = root.array_of_tables("contact_laws");
+  for (const TomlReader& t : laws) {
     s.contact_laws.push_back(read_contact_law(t));
     for (const std::string* m :
          {&s.contact_laws.back().material_a, &s.contact_laws.back().material_b})
       if (!material_names.count(*m)) t.fail("materials", "unknown material '" + *m + "'");
     const ContactLawParams& p = s.contact_laws.back().params;
-    cohesive_reach = std::max(cohesive_reach, tensile_reach(p));
+    if (tensile_reach(p) > cohesive_reach) {
+      cohesive_reach = tensile_reach(p);
+      reach_law = static_cast<int>(s.contact_laws.size()) - 1;
+    }
   }
   read_contact_settings(root, s, cohesive_reach);
   if (!s.contact_laws.empty()) check_contact_laws_cover_materials(root, s);
   check_scenario_geometry(s, root);  // name, periodic cell, node spacing (docs: "Safety")
+  check_contact_reach(root, s, laws, reach_law, cohesive_reach);
   return s;
 }
 

@@ -74,6 +74,8 @@ struct ScenarioDef {
   long reestimate_interval = 2000;  // accepted steps between critical-step estimates
   double step_tolerance = 0.0;      // |energy residual change| per step / energy scale; 0: off
   double mass_scaling_step = 0.0;   // > 0: scale masses so that the step reaches this (time)
+  // Run even when the step is absurdly small for the duration (run/run_length.h).
+  bool allow_long_run = false;
   // integrator = "imex": the bulk damping of damped deformable bodies implicit in the velocity
   // (solver/implicit_viscosity.h), the step no longer limited by it; "explicit" (default).
   bool implicit_viscosity = false;

@@ -1,6 +1,9 @@
 // [[materials]], [[grains]] (inline, from a CSV list, or explicit contours) and [[walls]] of a
 // scenario file (scenario_readers.h).
 #include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
 #include <string>
 
 #include "core/error.h"
@@ -39,8 +42,10 @@ Polygon read_contour(const TomlReader& t) {
     contour = t.pairs("points", 3);
   } else {
     const CsvTable csv(t.file_path("contour_file"), {"x", "y"}, {"x", "y"});
-    for (const CsvTable::Row& row : csv.rows())
-      contour.emplace_back(csv.number(row, "x"), csv.number(row, "y"));
+    for (const CsvTable::Row& row : csv.rows()) {
+      const double x = csv.number(row, "x");  // x first: the message names the first bad cell
+      contour.emplace_back(x, csv.number(row, "y"));
+    }
     if (contour.size() < 3) t.fail(key, "a contour needs at least 3 points");
   }
   if (signed_area(contour) < 0.0) std::reverse(contour.begin(), contour.end());
@@ -113,24 +118,82 @@ void read_grains_file(const TomlReader& t, std::vector<GrainSpec>& out) {
     const CsvTable::Row& row = csv.rows()[i];
     GrainSpec g;
     g.name = csv.text(row, "name", prefix + "_" + std::to_string(i));
-    g.center = Vec2(csv.number(row, "x"), csv.number(row, "y"));
+    // One cell at a time, left to right: an error names the row's first bad cell (the
+    // arguments of one call are evaluated in no fixed order).
+    const double x = csv.number(row, "x");
+    g.center = Vec2(x, csv.number(row, "y"));
     const bool disc = csv.has(row, "diameter");
-    if (disc && (csv.has(row, "a") || csv.has(row, "b")))
-      csv.fail(row, "a", "give a diameter or semi-axes a and b, not both");
+    const bool ellipse = csv.has(row, "a") || csv.has(row, "b");
+    if (disc && ellipse) csv.fail(row, "a", "give a diameter or semi-axes a and b, not both");
+    if (!disc && !ellipse)
+      csv.fail(row, csv.has_column("diameter") ? "diameter" : "a",
+               "a grain needs a diameter, or semi-axes a and b; the row gives neither" +
+                   csv.short_row_note(row));
     if (disc) {
       g.radius = 0.5 * csv.positive(row, "diameter");
     } else {
       g.shape = GrainShape::ellipse;
-      g.semi_axes = Vec2(csv.positive(row, "a"), csv.positive(row, "b"));
+      const double a = csv.positive(row, "a");
+      g.semi_axes = Vec2(a, csv.positive(row, "b"));
       g.angle = csv.number(row, "angle", 0.0);
     }
     g.material = csv.text(row, "material", material);
     if (g.material.empty())
       csv.fail(row, "material", "no material (give the column, or material in the table)");
     g.rigid = csv.boolean(row, "rigid", rigid);
-    g.velocity = Vec2(csv.number(row, "vx", 0.0), csv.number(row, "vy", 0.0));
+    const double vx = csv.number(row, "vx", 0.0);
+    g.velocity = Vec2(vx, csv.number(row, "vy", 0.0));
     g.spin = csv.number(row, "spin", 0.0);
     out.push_back(g);
+  }
+}
+
+// The radius of the disc of the grain's area (an ellipse: its smaller semi-axis).
+double inner_radius(const GrainSpec& g) {
+  switch (g.shape) {
+    case GrainShape::disc:
+      return g.radius;
+    case GrainShape::ellipse:
+      return std::min(g.semi_axes.x(), g.semi_axes.y());
+    case GrainShape::contour:
+      return std::sqrt(signed_area(g.contour) / std::numbers::pi);
+  }
+  return 0.0;
+}
+
+// Two grains at the same place (a row of a grains file, or a [[grains]] table, given twice)
+// are refused: their contours coincide, so the overlap check of the built model, which looks
+// for contour points strictly inside another body, does not see them (issue #26). "The same
+// place": centres closer than 10^-6 of the smaller grain's inner radius. `tables[k]` is the
+// [[grains]] table that gave grain k.
+void refuse_coincident_grains(const std::vector<GrainSpec>& grains,
+                              const std::vector<const TomlReader*>& tables) {
+  std::vector<std::size_t> order(grains.size());
+  for (std::size_t k = 0; k < order.size(); ++k)
+    order[k] = k;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return grains[a].center.x() < grains[b].center.x();
+  });
+  double largest = 0.0;
+  for (const GrainSpec& g : grains)
+    largest = std::max(largest, inner_radius(g));
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const GrainSpec& a = grains[order[i]];
+    for (std::size_t j = i + 1; j < order.size(); ++j) {
+      const GrainSpec& b = grains[order[j]];
+      if (b.center.x() - a.center.x() > 1e-6 * largest) break;
+      const double tolerance = 1e-6 * std::min(inner_radius(a), inner_radius(b));
+      if ((a.center - b.center).norm() > tolerance) continue;
+      const std::size_t later = std::max(order[i], order[j]),
+                        earlier = std::min(order[i], order[j]);
+      const TomlReader& t = *tables[later];
+      std::ostringstream message;
+      message << "grains '" << grains[earlier].name << "' and '" << grains[later].name
+              << "' are at the same place (centre " << grains[later].center.x() << ", "
+              << grains[later].center.y() << "): coincident grains (a row or table given "
+              << "twice?); expected every grain at its own place";
+      t.fail(t.has("grains_file") ? "grains_file" : "center", message.str());
+    }
   }
 }
 
@@ -170,6 +233,7 @@ void read_grains(const TomlReader& root, ScenarioDef& s,
   if (grains.empty() && !s.shear_cell && !s.compaction_box && s.strips.empty())
     root.fail("grains",
               "at least one [[grains]] table (or a [shear_cell] or [compaction_box]) is required");
+  std::vector<const TomlReader*> tables;  // of each grain
   for (std::size_t i = 0; i < grains.size(); ++i) {
     const std::size_t first = s.grains.size();
     if (grains[i].has("grains_file"))
@@ -183,8 +247,10 @@ void read_grains(const TomlReader& root, ScenarioDef& s,
             "unknown material '" + s.grains[k].material + "' (grain '" + s.grains[k].name + "')");
       if (!body_names.insert(s.grains[k].name).second)
         grains[i].fail("name", "grain name '" + s.grains[k].name + "' is used twice");
+      tables.push_back(&grains[i]);
     }
   }
+  refuse_coincident_grains(s.grains, tables);
 }
 
 void read_walls(const TomlReader& root, ScenarioDef& s, const std::set<std::string>& material_names,

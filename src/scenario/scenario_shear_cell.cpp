@@ -86,8 +86,9 @@ ShearCellDef read_shear_cell(const TomlReader& t, const std::set<std::string>& m
                          "top_drive"});
   ShearCellDef c;
   c.length = t.positive("length", c.length);
-  c.grains = static_cast<int>(t.integer("grains", c.grains));
-  if (c.grains < 1) t.fail("grains", "expected a positive integer");
+  // At most 10^6 grains: a paper-size sample has 2000 to 3000; 10^6 deformable ones would
+  // take over 10^8 nodes.
+  c.grains = static_cast<int>(t.integer_in("grains", c.grains, 1, 1000000));
   const Vec2 d = t.vec2("diameter", Vec2(0.85, 1.15));
   if (!(d.x() > 0 && d.y() >= d.x())) t.fail("diameter", "expected [min, max] with 0 < min <= max");
   c.diameter.min = d.x();

@@ -24,8 +24,10 @@ std::vector<Vec2> read_profile_points(const TomlReader& t, std::string& source) 
   source = path.string();
   const CsvTable csv(path, {"x", "y"}, {"x", "y"});
   std::vector<Vec2> points;
-  for (const CsvTable::Row& row : csv.rows())
-    points.emplace_back(csv.number(row, "x"), csv.number(row, "y"));
+  for (const CsvTable::Row& row : csv.rows()) {
+    const double x = csv.number(row, "x");  // x first: the message names the first bad cell
+    points.emplace_back(x, csv.number(row, "y"));
+  }
   return points;
 }
 

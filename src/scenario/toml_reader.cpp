@@ -2,10 +2,12 @@
 
 #include <toml++/toml.h>
 
+#include <cmath>
 #include <set>
 #include <sstream>
 
 #include "core/error.h"
+#include "core/input_file.h"
 
 namespace sg {
 
@@ -14,8 +16,9 @@ struct ParsedToml {
 };
 
 TomlDocument::TomlDocument(const std::filesystem::path& file) : file_(file), parsed_(nullptr) {
-  SG_VERIFY(std::filesystem::exists(file),
-            "scenario file '" << file.string() << "' does not exist");
+  // By type before opening: a FIFO would block open() forever, a folder or /dev/zero would
+  // parse as an empty or endless document.
+  require_input_file(file, "scenario file");
   try {
     parsed_ = new ParsedToml{toml::parse_file(file.string())};
   } catch (const toml::parse_error& e) {
@@ -63,8 +66,28 @@ bool TomlReader::has(const std::string& key) const {
   return find(key) != nullptr;
 }
 
+namespace {
+
+// TOML spells inf and nan; no scenario number may be either (a duration of inf would run no
+// step, a NaN velocity would fail late naming a node instead of the key), nor beyond what the
+// run's arithmetic holds (core/input_file.h, kMaxInputMagnitude).
+std::string number_problem(double v) {
+  std::ostringstream s;
+  if (!std::isfinite(v))
+    s << "expected a finite number, got " << v;
+  else if (std::abs(v) > kMaxInputMagnitude)
+    s << "expected a number of magnitude at most " << kMaxInputMagnitude
+      << " (products of such numbers must stay finite), got " << v;
+  return s.str();
+}
+
+}  // namespace
+
 double TomlReader::as_number(const std::string& key, const toml::node& n) const {
-  if (auto v = n.value<double>()) return *v;  // integers convert too
+  if (auto v = n.value<double>()) {  // integers convert too
+    if (const std::string problem = number_problem(*v); !problem.empty()) fail(key, problem);
+    return *v;
+  }
   std::ostringstream got;
   n.visit([&](const auto& value) { got << value; });
   fail(key, "expected a number, got " + got.str());
@@ -84,6 +107,12 @@ double TomlReader::number(const std::string& key, double fallback) const {
 double TomlReader::positive(const std::string& key) const {
   const double v = number(key);
   if (!(v > 0.0)) fail(key, "expected a positive number, got " + std::to_string(v));
+  if (v < kMinInputMagnitude) {
+    std::ostringstream s;
+    s << "expected a positive number of at least " << kMinInputMagnitude
+      << " (products of such numbers must stay above zero), got " << v;
+    fail(key, s.str());
+  }
   return v;
 }
 
@@ -102,6 +131,14 @@ long TomlReader::integer(const std::string& key, long fallback) const {
   if (!n) return fallback;
   if (auto v = n->value_exact<int64_t>()) return static_cast<long>(*v);
   fail(key, "expected an integer");
+}
+
+long TomlReader::integer_in(const std::string& key, long fallback, long min, long max) const {
+  const long v = integer(key, fallback);
+  if (v < min || v > max)
+    fail(key, "expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) +
+                  "], got " + std::to_string(v));
+  return v;
 }
 
 std::string TomlReader::string(const std::string& key) const {
@@ -147,7 +184,11 @@ Vec2 TomlReader::vec2(const std::string& key) const {
   const toml::array* a = n->as_array();
   if (!a || a->size() != 2 || !(*a)[0].value<double>() || !(*a)[1].value<double>())
     fail(key, "expected a pair of numbers [x, y]");
-  return Vec2(*(*a)[0].value<double>(), *(*a)[1].value<double>());
+  const Vec2 v(*(*a)[0].value<double>(), *(*a)[1].value<double>());
+  for (double c : {v.x(), v.y()})
+    if (const std::string problem = number_problem(c); !problem.empty())
+      fail(key, "[x, y]: " + problem);
+  return v;
 }
 
 Vec2 TomlReader::vec2(const std::string& key, const Vec2& fallback) const {
@@ -174,6 +215,9 @@ std::vector<Vec2> TomlReader::pairs(const std::string& key, std::size_t min_coun
     if (!p || p->size() != 2 || !(*p)[0].value<double>() || !(*p)[1].value<double>())
       fail(key, expected + "; entry " + std::to_string(i + 1) + " is not a pair of numbers");
     out.emplace_back(*(*p)[0].value<double>(), *(*p)[1].value<double>());
+    for (double c : {out.back().x(), out.back().y()})
+      if (const std::string problem = number_problem(c); !problem.empty())
+        fail(key, "entry " + std::to_string(i + 1) + ": " + problem);
   }
   return out;
 }
@@ -181,8 +225,9 @@ std::vector<Vec2> TomlReader::pairs(const std::string& key, std::size_t min_coun
 std::filesystem::path TomlReader::file_path(const std::string& key) const {
   const std::filesystem::path name = string(key);
   const std::filesystem::path path = name.is_absolute() ? name : file_.parent_path() / name;
-  if (!std::filesystem::is_regular_file(path))
-    fail(key, "file '" + path.string() + "' does not exist");
+  // By type before anything opens it (core/input_file.h).
+  const std::string problem = input_file_problem(path);
+  if (!problem.empty()) fail(key, "file " + shown_path(path) + " " + problem);
   return path;
 }
 

@@ -34,6 +34,9 @@ class TomlReader {
   double positive(const std::string& key, double fallback) const;
   double non_negative(const std::string& key, double fallback) const;
   long integer(const std::string& key, long fallback) const;
+  // An integer in [min, max] (a count: a grain count of 1e11 overflowed an int and ended in
+  // bad_alloc or a hang).
+  long integer_in(const std::string& key, long fallback, long min, long max) const;
   std::string string(const std::string& key) const;
   std::string string(const std::string& key, const std::string& fallback) const;
   std::string one_of(const std::string& key, std::initializer_list<const char*> choices,

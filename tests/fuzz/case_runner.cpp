@@ -9,6 +9,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <string_view>
 #include <thread>
 
 namespace sg::fuzz {
@@ -57,6 +58,42 @@ std::string stray_writes(const Sandbox& s, const std::set<std::string>& inputs) 
     if (!fs::is_directory(s.output_root() / n) || fs::is_symlink(s.output_root() / n))
       return "wrote '" + n + "' in the output root, not a folder";
   }
+  return "";
+}
+
+// Empty if no series.csv(.partial) of the output root holds a non-finite number (a run that
+// "ran" while writing NaN energies, as a density of 1e300 did, is a failure: issue #26).
+std::string non_finite_output(const Sandbox& s) {
+  for (const std::string& run : entries(s.output_root()))
+    for (const char* name : {"series.csv", "series.csv.partial"}) {
+      std::ifstream in(s.output_root() / run / name, std::ios::binary);
+      int line_number = 0;
+      for (std::string line; std::getline(in, line);) {
+        ++line_number;
+        std::istringstream cells(line);
+        for (std::string cell; std::getline(cells, cell, ',');)
+          if (cell == "nan" || cell == "-nan" || cell == "inf" || cell == "-inf")
+            return "wrote '" + cell + "' in " + run + "/" + name + " line " +
+                   std::to_string(line_number);
+      }
+    }
+  return "";
+}
+
+// Empty if every file that a .pvd of the output root lists exists (a resumed run whose
+// snapshots were deleted listed them all the same: issue #26).
+std::string missing_snapshots(const Sandbox& s) {
+  for (const std::string& run : entries(s.output_root()))
+    for (const char* index : {"fields.pvd", "contacts.pvd"}) {
+      const std::string text = read_text(s.output_root() / run / index);
+      constexpr std::string_view kFile = "file=\"";
+      for (auto at = text.find(kFile); at != std::string::npos; at = text.find(kFile, at + 1)) {
+        const auto begin = at + kFile.size(), end = text.find('"', begin);
+        const std::string file = text.substr(begin, end - begin);
+        if (!fs::is_regular_file(s.output_root() / run / file))
+          return run + "/" + index + " lists " + file + ", which is missing";
+      }
+    }
   return "";
 }
 
@@ -118,7 +155,7 @@ std::vector<std::string> non_empty_lines(const std::string& text) {
 CaseResult run_case(const Sandbox& s, const fs::path& executable,
                     const std::vector<std::string>& args, const std::string& file_name,
                     const std::string& text, const std::vector<fs::path>& companions,
-                    double timeout_seconds) {
+                    double timeout_seconds, const std::function<void()>& prepare) {
   fs::remove_all(s.case_dir());
   fs::create_directories(s.work_dir());
   fs::create_directories(s.root / "logs");
@@ -128,6 +165,7 @@ CaseResult run_case(const Sandbox& s, const fs::path& executable,
     inputs.insert(c.filename().string());
   }
   std::ofstream(s.work_dir() / file_name, std::ios::binary) << text;
+  if (prepare) prepare();
   const auto start = std::chrono::steady_clock::now();
   const Exit exit = spawn_and_wait(s, executable, args, timeout_seconds);
   CaseResult r;
@@ -152,11 +190,22 @@ CaseResult run_case(const Sandbox& s, const fs::path& executable,
     } else {
       r.outcome = CaseResult::Outcome::refused;
       r.detail = last;
+      // A CSV file's messages name its line and column instead of a key.
       r.names_file = last.find(file_name) != std::string::npos &&
                      (last.find("key '") != std::string::npos ||
-                      last.find("TOML syntax error") != std::string::npos);
+                      last.find("TOML syntax error") != std::string::npos ||
+                      last.find(": column ") != std::string::npos ||
+                      last.find("header row") != std::string::npos ||
+                      last.find("no data rows") != std::string::npos);
     }
   }
+  if (r.outcome == CaseResult::Outcome::ran)
+    for (const std::string& bad : {non_finite_output(s), missing_snapshots(s)})
+      if (!bad.empty()) {
+        r.outcome = CaseResult::Outcome::failed;
+        r.detail = bad;
+        break;
+      }
   if (const std::string stray = stray_writes(s, inputs); !stray.empty()) {
     r.outcome = CaseResult::Outcome::failed;
     r.detail = stray + (r.detail.empty() ? "" : "; " + r.detail);

@@ -2,6 +2,7 @@
 // Runs one fuzz case: the softgrain executable on a mutated file, in a sandbox folder, with
 // a time bound; then checks what it wrote and what it printed.
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -24,10 +25,13 @@ struct Sandbox {
 
 // Writes `text` as work/<file_name> (plus `companions`, copied next to it), runs
 // `executable args...` from work/ with stdout and stderr in logs/, kills it after
-// `timeout_seconds`, and checks the outcome and the sandbox.
+// `timeout_seconds`, and checks the outcome and the sandbox: besides the exit and the
+// messages, a case that ran must have written no non-finite number in series.csv and no .pvd
+// entry whose file is missing. `prepare`, if set, runs just before the executable (it may put
+// a run folder in some state into the output root).
 CaseResult run_case(const Sandbox& sandbox, const std::filesystem::path& executable,
                     const std::vector<std::string>& args, const std::string& file_name,
                     const std::string& text, const std::vector<std::filesystem::path>& companions,
-                    double timeout_seconds);
+                    double timeout_seconds, const std::function<void()>& prepare = {});
 
 }  // namespace sg::fuzz

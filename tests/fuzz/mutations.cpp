@@ -140,4 +140,63 @@ std::vector<Mutation> mutations_of(const std::string& text, const std::string& a
   return out;
 }
 
+std::vector<Mutation> csv_mutations_of(const std::string& text) {
+  const std::vector<std::string> lines = split_lines(text);
+  std::vector<Mutation> out;
+  auto with_line = [&](std::size_t k, const std::vector<std::string>& replacement) {
+    std::vector<std::string> l(lines.begin(), lines.begin() + static_cast<long>(k));
+    l.insert(l.end(), replacement.begin(), replacement.end());
+    l.insert(l.end(), lines.begin() + static_cast<long>(k) + 1, lines.end());
+    return join_lines(l);
+  };
+  auto cells_of = [](const std::string& line) {
+    std::vector<std::string> cells(1);
+    for (char c : line)
+      if (c == ',')
+        cells.emplace_back();
+      else
+        cells.back() += c;
+    return cells;
+  };
+  auto joined = [](const std::vector<std::string>& cells) {
+    std::string line;
+    for (std::size_t i = 0; i < cells.size(); ++i)
+      line += (i ? "," : "") + cells[i];
+    return line;
+  };
+  const std::vector<std::string> cell_values = {"-0.2", "0", "nan", "inf", "1e400", "abc", ""};
+  // The header and the first three data rows (comments and blank lines are not rows): every
+  // row has the same columns, so later rows add nothing but time.
+  int rows = 0;
+  for (std::size_t k = 0; k < lines.size() && rows < 4; ++k) {
+    const std::string t = trimmed(lines[k]);
+    if (t.empty() || t[0] == '#') continue;
+    ++rows;
+    const std::string where = "csv line " + std::to_string(k + 1) + ": ";
+    const std::vector<std::string> cells = cells_of(lines[k]);
+    for (std::size_t c = 0; c < cells.size(); ++c)
+      for (const std::string& v : cell_values) {
+        std::vector<std::string> changed = cells;
+        changed[c] = v;
+        out.push_back({where + "cell " + std::to_string(c + 1) + " '" + trimmed(cells[c]) +
+                           "' -> '" + v + "'",
+                       with_line(k, {joined(changed)})});
+      }
+    std::vector<std::string> shorter(cells.begin(), cells.end() - 1);
+    out.push_back({where + "last cell dropped", with_line(k, {joined(shorter)})});
+    out.push_back({where + "a cell too many", with_line(k, {lines[k] + ",1"})});
+    out.push_back({where + "row doubled", with_line(k, {lines[k], lines[k]})});
+    out.push_back({where + "row blanked",
+                   with_line(k, {std::string(cells.size() > 0 ? cells.size() - 1 : 0, ',')})});
+    if (rows == 1) out.push_back({where + "header dropped", with_line(k, {})});
+  }
+  out.push_back({"csv emptied", ""});
+  constexpr int kTruncations = 4;
+  for (int c = 1; c <= kTruncations; ++c) {
+    const std::size_t at = text.size() * static_cast<std::size_t>(c) / (kTruncations + 1);
+    out.push_back({"csv truncated at byte " + std::to_string(at), text.substr(0, at)});
+  }
+  return out;
+}
+
 }  // namespace sg::fuzz

@@ -17,4 +17,10 @@ struct Mutation {
 // `absolute_escape` is an absolute path the fuzzer watches (it must stay unwritten).
 std::vector<Mutation> mutations_of(const std::string& text, const std::string& absolute_escape);
 
+// Mutations of a CSV data file a scenario names (grains, contour, profile; issue #26): every
+// cell of the header and of the first data rows -> -0.2, 0, nan, inf, 1e400, a word, empty;
+// each of those rows cut short by a cell, given a cell too many, doubled (coincident grains),
+// blanked (",,,"); the header dropped; the file emptied or truncated at several points.
+std::vector<Mutation> csv_mutations_of(const std::string& text);
+
 }  // namespace sg::fuzz

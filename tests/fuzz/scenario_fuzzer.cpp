@@ -3,7 +3,10 @@
 // run (`softgrain run --max-steps 2`, or `softgrain sweep --dry-run` for a campaign), one
 // sandbox per case and a time bound per case. Every case must run (exit 0) or be refused
 // (exit 1, with exactly one "softgrain: error:" line, the last one); never crash, hang or
-// write anywhere but its run folder <output root>/<name>/ (fuzz/case_runner.h).
+// write anywhere but its run folder <output root>/<name>/, nor write a non-finite number in
+// series.csv (fuzz/case_runner.h). A scenario that names CSV files (grains, contour, profile)
+// also gets as many cases mutating each of them (fuzz/mutations.h, csv_mutations_of); a run
+// folder of free-grains.toml is then tried in odd states (fuzz_run_folders).
 //
 //   scenario_fuzzer SOFTGRAIN EXAMPLES_DIR
 // Environment (CI uses the defaults):
@@ -20,6 +23,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <random>
@@ -45,6 +49,20 @@ std::string read_text(const fs::path& p) {
   return s.str();
 }
 
+// The CSV files of `examples` that a scenario's text names ("grains.csv" in any key).
+std::vector<fs::path> csv_files_named(const std::string& text, const fs::path& examples) {
+  std::vector<fs::path> found;
+  for (std::size_t at = text.find(".csv\""); at != std::string::npos;
+       at = text.find(".csv\"", at + 1)) {
+    const std::size_t open = text.rfind('"', at);
+    if (open == std::string::npos) continue;
+    const fs::path f = examples / text.substr(open + 1, at + 4 - open - 1);
+    if (fs::is_regular_file(f) && std::find(found.begin(), found.end(), f) == found.end())
+      found.push_back(f);
+  }
+  return found;
+}
+
 bool is_campaign(const std::string& text) {
   return text.find("\n[grid]") != std::string::npos || text.find("\n[[list]]") != std::string::npos;
 }
@@ -54,6 +72,140 @@ struct Counts {
   double slowest = 0.0;
   std::string slowest_case;
 };
+
+void count(const CaseResult& r, const std::string& what, Counts& counts,
+           std::map<std::string, int>& unnamed, int& failed) {
+  if (r.seconds > counts.slowest) {
+    counts.slowest = r.seconds;
+    counts.slowest_case = what;
+  }
+  switch (r.outcome) {
+    case CaseResult::Outcome::ran:
+      ++counts.ran;
+      break;
+    case CaseResult::Outcome::refused:
+      if (r.names_file) {
+        ++counts.refused_with_key;
+      } else {
+        ++counts.refused_other;
+        ++unnamed[r.detail.substr(0, 200)];
+      }
+      break;
+    case CaseResult::Outcome::failed:
+      ++counts.failed;
+      ++failed;
+      std::cout << "FAILED " << what << ": " << r.detail << "\n";
+      break;
+  }
+}
+
+// Run folders in odd states (issue #26): a run of `example` stopped after its first checkpoint
+// is the seed; each case copies it into the output root, changes one thing, and runs
+// `softgrain run` there again. A damaged checkpoint (a byte flipped, the file truncated) must
+// be refused or resume; a deleted snapshot must resume (and the .pvd then list only files
+// present: case_runner's check); a linked fields/ and the folder of another scenario's run
+// must be refused. `sampled`: how many flipped bytes (0: every 97th byte).
+void fuzz_run_folders(const Sandbox& sandbox, const fs::path& executable, const fs::path& example,
+                      std::size_t sampled, std::mt19937_64& random, double timeout, Counts& counts,
+                      std::map<std::string, int>& unnamed) {
+  const std::string name = example.filename().string();
+  const std::string text = read_text(example);
+  const fs::path seed = sandbox.root.string() + "-seed";
+  std::string run_name;
+  // The seed: longer and longer stops until the folder holds a checkpoint.
+  for (const char* steps : {"200", "1000", "5000"}) {
+    run_case(sandbox, executable, {"run", name, "-o", "../root", "--max-steps", steps}, name, text,
+             {}, timeout);
+    for (const auto& e : fs::directory_iterator(sandbox.output_root()))
+      run_name = e.path().filename().string();
+    if (!run_name.empty() && fs::exists(sandbox.output_root() / run_name / "checkpoint.bin")) break;
+  }
+  const fs::path seed_run = sandbox.output_root() / run_name;
+  if (run_name.empty() || !fs::exists(seed_run / "checkpoint.bin")) {
+    std::cout << "FAILED run folders: no checkpoint from " << name << "\n";
+    ++counts.failed;
+    return;
+  }
+  fs::remove_all(seed);
+  fs::copy(seed_run, seed, fs::copy_options::recursive);
+  const std::string checkpoint = read_text(seed / "checkpoint.bin");
+
+  struct FolderCase {
+    std::string what;
+    bool resume = true;
+    bool must_refuse = false;
+    std::function<void(const fs::path& run)> change;
+  };
+  std::vector<FolderCase> cases;
+  auto write = [](const fs::path& p, const std::string& bytes) {
+    std::ofstream(p, std::ios::binary | std::ios::trunc) << bytes;
+  };
+  std::vector<std::size_t> positions;
+  if (sampled == 0) {
+    for (std::size_t at = 0; at < checkpoint.size(); at += 97)
+      positions.push_back(at);
+  } else {
+    std::uniform_int_distribution<std::size_t> byte(0, checkpoint.size() - 1);
+    for (std::size_t k = 0; k < sampled; ++k)
+      positions.push_back(byte(random));
+  }
+  for (std::size_t at : positions)
+    cases.push_back({"checkpoint byte " + std::to_string(at) + " flipped", true, false,
+                     [=](const fs::path& run) {
+                       std::string bytes = checkpoint;
+                       bytes[at] = static_cast<char>(~bytes[at]);
+                       write(run / "checkpoint.bin", bytes);
+                     }});
+  for (int c = 0; c < 4; ++c) {
+    const std::size_t at = checkpoint.size() * static_cast<std::size_t>(c) / 4;
+    cases.push_back(
+        {"checkpoint truncated at byte " + std::to_string(at), true, false,
+         [=](const fs::path& run) { write(run / "checkpoint.bin", checkpoint.substr(0, at)); }});
+  }
+  cases.push_back({"snapshot fields/000001.vtu deleted", true, false,
+                   [](const fs::path& run) { fs::remove(run / "fields" / "000001.vtu"); }});
+  cases.push_back({"series.csv.partial deleted", true, false,
+                   [](const fs::path& run) { fs::remove(run / "series.csv.partial"); }});
+  const fs::path outside = sandbox.escape_target();  // must stay unwritten (stray_writes)
+  for (const char* sub : {"fields", "grains"})
+    for (const bool resume : {false, true})
+      cases.push_back(
+          {std::string(sub) + "/ replaced by a link outside" + (resume ? " (resume)" : ""), resume,
+           true, [=](const fs::path& run) {
+             fs::remove_all(run / sub);
+             fs::create_directory_symlink(outside, run / sub);
+           }});
+  cases.push_back({"run.log of another scenario", false, true, [](const fs::path& run) {
+                     std::string log = read_text(run / "run.log");
+                     const auto line = log.find("scenario = ");
+                     log.replace(line, log.find('\n', line) - line, "scenario = another.toml");
+                     std::ofstream(run / "run.log", std::ios::binary | std::ios::trunc) << log;
+                   }});
+
+  int failed = 0;
+  for (const FolderCase& c : cases) {
+    std::vector<std::string> args = {"run",         name, "-o",        "../root",
+                                     "--max-steps", "2",  "--threads", "1"};
+    if (c.resume) args.push_back("--resume");
+    const CaseResult r = run_case(sandbox, executable, args, name, text, {}, timeout, [&] {
+      fs::create_directories(sandbox.output_root());
+      fs::copy(seed, sandbox.output_root() / run_name, fs::copy_options::recursive);
+      c.change(sandbox.output_root() / run_name);
+    });
+    if (c.must_refuse && r.outcome == CaseResult::Outcome::ran) {
+      CaseResult wrong = r;
+      wrong.outcome = CaseResult::Outcome::failed;
+      wrong.detail = "ran, where it must be refused";
+      count(wrong, "run folder: " + c.what, counts, unnamed, failed);
+    } else {
+      count(r, "run folder: " + c.what, counts, unnamed, failed);
+    }
+  }
+  fs::remove_all(seed);
+  std::cout << "run folders of " << name << ": " << cases.size() << " cases, " << failed
+            << " failed\n"
+            << std::flush;
+}
 
 }  // namespace
 
@@ -95,7 +247,7 @@ int main(int argc, char** argv) {
     if (!all && cases.size() > per_file) cases.resize(per_file);
     const std::string name = file.filename().string();
     std::vector<std::string> args;
-    std::vector<fs::path> companions;
+    std::vector<fs::path> companions, csv_files;
     if (is_campaign(text)) {
       // --no-plan: the planner builds and steps every run for a second (the models of the
       // run cases), which would add minutes to the fuzzer under the sanitizers.
@@ -104,37 +256,47 @@ int main(int argc, char** argv) {
         if (f != file) companions.push_back(f);  // the base scenario it names
     } else {
       args = {"run", name, "-o", "../root", "--max-steps", "2", "--threads", "1"};
+      csv_files = csv_files_named(text, examples);  // the data files it points to
+      companions = csv_files;
+    }
+    // The cases: mutations of the file itself, then of each CSV file it names (issue #26),
+    // with the file itself intact; `target` is the file a case mutates.
+    struct Case {
+      Mutation mutation;
+      std::string target;
+      std::vector<fs::path> companions;
+    };
+    std::vector<Case> all_cases;
+    for (Mutation& m : cases)
+      all_cases.push_back({std::move(m), name, companions});
+    for (const fs::path& csv : csv_files) {
+      std::vector<Mutation> csv_cases = csv_mutations_of(read_text(csv));
+      std::shuffle(csv_cases.begin(), csv_cases.end(), random);
+      if (!all && csv_cases.size() > per_file) csv_cases.resize(per_file);
+      std::vector<fs::path> others = {file};
+      for (const fs::path& c : companions)
+        if (c != csv) others.push_back(c);
+      for (Mutation& m : csv_cases) {
+        m.what = csv.filename().string() + ": " + m.what;
+        all_cases.push_back({std::move(m), csv.filename().string(), others});
+      }
     }
     int file_failed = 0;
-    for (const Mutation& m : cases) {
-      const CaseResult r = run_case(sandbox, executable, args, name, m.text, companions, timeout);
-      if (r.seconds > counts.slowest) {
-        counts.slowest = r.seconds;
-        counts.slowest_case = name + " " + m.what;
-      }
-      switch (r.outcome) {
-        case CaseResult::Outcome::ran:
-          ++counts.ran;
-          break;
-        case CaseResult::Outcome::refused:
-          if (r.names_file) {
-            ++counts.refused_with_key;
-          } else {
-            ++counts.refused_other;
-            ++unnamed[r.detail.substr(0, 200)];
-          }
-          break;
-        case CaseResult::Outcome::failed:
-          ++counts.failed;
-          ++file_failed;
-          std::cout << "FAILED " << name << " " << m.what << ": " << r.detail << "\n";
-          break;
-      }
+    for (const Case& c : all_cases) {
+      const Mutation& m = c.mutation;
+      const CaseResult r =
+          run_case(sandbox, executable, args, c.target, m.text, c.companions, timeout);
+      count(r, name + " " + m.what, counts, unnamed, file_failed);
     }
-    std::cout << name << ": " << cases.size() << " of " << total << " mutations, " << file_failed
-              << " failed\n"
+    std::cout << name << ": " << all_cases.size() << " cases (" << cases.size() << " of " << total
+              << " mutations of the file, " << all_cases.size() - cases.size()
+              << " of its CSV files), " << file_failed << " failed\n"
               << std::flush;
   }
+  // The smallest example's run folder in odd states (sampled like a file's mutations).
+  if (const fs::path free_grains = examples / "free-grains.toml"; fs::exists(free_grains))
+    fuzz_run_folders(sandbox, executable, free_grains, all ? 0 : per_file, random, timeout, counts,
+                     unnamed);
   fs::remove_all(sandbox.root);
   for (const auto& [message, n] : unnamed)
     std::cout << "refused without naming the file and key (" << n << "x): " << message << "\n";
