@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdio>
 #include <string>
+#include "test_locations.h"  // SOFTGRAIN_EXECUTABLE, SOFTGRAIN_SOURCE_DIR
 
 namespace sg::test {
 

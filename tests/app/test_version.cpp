@@ -12,6 +12,7 @@
 #include "core/version.h"
 #include "scenes/scenario_files.h"
 #include "scenes/tiny_scenario.h"
+#include "test_locations.h"  // SOFTGRAIN_EXECUTABLE, SOFTGRAIN_SOURCE_DIR
 
 namespace sg {
 namespace {

@@ -25,6 +25,7 @@
 #include "scenes/scenario_files.h"
 #include "scenes/shear_cell_scenario.h"
 #include "scenes/tiny_scenario.h"
+#include "test_locations.h"  // SOFTGRAIN_EXECUTABLE, SOFTGRAIN_SOURCE_DIR
 
 namespace sg {
 namespace {
@@ -284,66 +285,67 @@ analyze_options = ["--window", "2.5", "4", "--no-agglomerates", "--no-plots"]
         << rows[unloaded][column("unmeasured")];
     EXPECT_NE(rows[unloaded][column("unmeasured")].find("mean normal force 0"), std::string::npos);
   }
+}
 
-  // Issue #26: a resume that fails (here a damaged checkpoint) moves checkpoint.bin and
-  // series.csv* aside as *.damaged, so that the next sweep starts the run from scratch as the
-  // message says, and it completes.
-  TEST(Sweep, AFailedResumeMovesTheDamagedFilesAsideAndTheNextSweepStartsOver) {
-    const fs::path dir = fresh_dir("damaged");
-    write_campaign(dir, 1);
-    const fs::path run = dir / "out" / "c" / "runs" / "run-000_young=10_friction=0.1";
-    fs::create_directories(run);
-    std::ofstream(run / "checkpoint.bin") << "not a checkpoint";
-    std::ofstream(run / "series.csv.partial") << "time,step\n0,0\n";
-    wait_exit_code(start_sweep(dir / "campaign.toml", dir / "first.out"));
-    const std::string first = read(dir / "first.out");
-    EXPECT_NE(first.find("run-000_young=10_friction=0.1 resumed from its checkpoint"),
-              std::string::npos)
-        << first;
-    EXPECT_NE(first.find("(resuming failed: checkpoint.bin and series.csv* moved aside as "
-                         "*.damaged; the next sweep starts it from scratch)"),
-              std::string::npos)
-        << first;
-    EXPECT_EQ(read(run / "checkpoint.bin.damaged"), "not a checkpoint");
-    EXPECT_TRUE(fs::exists(run / "series.csv.partial.damaged"));
-    EXPECT_FALSE(fs::exists(run / "checkpoint.bin"));
-    const int code = wait_exit_code(start_sweep(dir / "campaign.toml", dir / "second.out"));
-    const std::string second = read(dir / "second.out");
-    ASSERT_EQ(code, 0) << second;
-    EXPECT_NE(second.find("run-000_young=10_friction=0.1 started"), std::string::npos) << second;
-    EXPECT_FALSE(fs::exists(run / "checkpoint.bin.damaged"));  // the from-scratch clean-up
-    expect_complete_table(dir / "out" / "c");
-  }
+// Issue #26: a resume that fails (here a damaged checkpoint) moves checkpoint.bin and
+// series.csv* aside as *.damaged, so that the next sweep starts the run from scratch as the
+// message says, and it completes.
+TEST(Sweep, AFailedResumeMovesTheDamagedFilesAsideAndTheNextSweepStartsOver) {
+  const fs::path dir = fresh_dir("damaged");
+  write_campaign(dir, 1);
+  const fs::path run = dir / "out" / "c" / "runs" / "run-000_young=10_friction=0.1";
+  fs::create_directories(run);
+  std::ofstream(run / "checkpoint.bin") << "not a checkpoint";
+  std::ofstream(run / "series.csv.partial") << "time,step\n0,0\n";
+  wait_exit_code(start_sweep(dir / "campaign.toml", dir / "first.out"));
+  const std::string first = read(dir / "first.out");
+  EXPECT_NE(first.find("run-000_young=10_friction=0.1 resumed from its checkpoint"),
+            std::string::npos)
+      << first;
+  EXPECT_NE(first.find("(resuming failed: checkpoint.bin and series.csv* moved aside as "
+                       "*.damaged; the next sweep starts it from scratch)"),
+            std::string::npos)
+      << first;
+  EXPECT_EQ(read(run / "checkpoint.bin.damaged"), "not a checkpoint");
+  EXPECT_TRUE(fs::exists(run / "series.csv.partial.damaged"));
+  EXPECT_FALSE(fs::exists(run / "checkpoint.bin"));
+  const int code = wait_exit_code(start_sweep(dir / "campaign.toml", dir / "second.out"));
+  const std::string second = read(dir / "second.out");
+  ASSERT_EQ(code, 0) << second;
+  EXPECT_NE(second.find("run-000_young=10_friction=0.1 started"), std::string::npos) << second;
+  EXPECT_FALSE(fs::exists(run / "checkpoint.bin.damaged"));  // the from-scratch clean-up
+  expect_complete_table(dir / "out" / "c");
+}
 
-  // Issue #26: a second sweep of a campaign that a sweep is running is refused, naming the
-  // process, before it touches the run folders (it would clean up and restart the runs the first
-  // one is writing).
-  TEST(Sweep, ASecondSweepOfTheSameCampaignIsRefusedNamingTheProcess) {
-    const fs::path dir = fresh_dir("second-sweep");
-    write_campaign(dir, 1);
-    const fs::path folder = dir / "out" / "c";
-    fs::create_directories(folder);
-    RunFolderLock lock;  // this process plays the first sweep
-    lock.acquire(folder, 3000ms, kSweepLockFile, "campaign folder");
-    const int code = wait_exit_code(start_sweep(dir / "campaign.toml", dir / "second.out"));
-    const std::string out = read(dir / "second.out");
-    EXPECT_EQ(code, 1) << out;
-    EXPECT_NE(out.find("softgrain: error: campaign folder '" + folder.string() +
-                       "' is in use: process " + std::to_string(::getpid())),
-              std::string::npos)
-        << out;
-    EXPECT_FALSE(fs::exists(folder / "runs")) << "the refused sweep wrote run folders";
-  }
+// Issue #26: a second sweep of a campaign that a sweep is running is refused, naming the
+// process, before it touches the run folders (it would clean up and restart the runs the first
+// one is writing).
+TEST(Sweep, ASecondSweepOfTheSameCampaignIsRefusedNamingTheProcess) {
+  const fs::path dir = fresh_dir("second-sweep");
+  write_campaign(dir, 1);
+  const fs::path folder = dir / "out" / "c";
+  fs::create_directories(folder);
+  RunFolderLock lock;  // this process plays the first sweep
+  lock.acquire(folder, 3000ms, kSweepLockFile, "campaign folder");
+  const int code = wait_exit_code(start_sweep(dir / "campaign.toml", dir / "second.out"));
+  const std::string out = read(dir / "second.out");
+  EXPECT_EQ(code, 1) << out;
+  EXPECT_NE(out.find("softgrain: error: campaign folder '" + folder.string() +
+                     "' is in use: process " + std::to_string(::getpid())),
+            std::string::npos)
+      << out;
+  EXPECT_FALSE(fs::exists(folder / "runs")) << "the refused sweep wrote run folders";
+}
 
-  // Issue #26: `softgrain sweep` killed alone (SIGKILL to the sweep, not its process group)
-  // while a run is mid-way and past a checkpoint, restarted at once: the orphaned run used to go
-  // on writing its folder beside the restarted sweep's resume of the same run (a corrupt
-  // series.csv, a run failed for good). Now the run dies with its sweep (PR_SET_PDEATHSIG) and a
-  // run folder is locked while a run writes it; the campaign completes with every run's files
-  // byte-identical to those of an uninterrupted campaign (but run.log, which notes the resume,
-  // sweep.log, and the run folder's path in analysis/summary.json).
-  void write_long_campaign(const fs::path& dir) {
-    std::ofstream(dir / "tiny.toml") << std::string(R"(name = "tiny"
+// Issue #26: `softgrain sweep` killed alone (SIGKILL to the sweep, not its process group)
+// while a run is mid-way and past a checkpoint, restarted at once: the orphaned run used to go
+// on writing its folder beside the restarted sweep's resume of the same run (a corrupt
+// series.csv, a run failed for good). Now the run dies with its sweep (PR_SET_PDEATHSIG) and a
+// run folder is locked while a run writes it; the campaign completes with every run's files
+// byte-identical to those of an uninterrupted campaign (but run.log, which notes the resume,
+// sweep.log, and the run folder's path in analysis/summary.json).
+void write_long_campaign(const fs::path& dir) {
+  std::ofstream(dir / "tiny.toml") << std::string(R"(name = "tiny"
 [time]
 duration = 0.4
 [output]
@@ -351,7 +353,7 @@ series_period = 0.005
 field_period = 0.05
 checkpoint_period = 0.02
 )") + scenes::kTinyScenarioBody;
-    std::ofstream(dir / "campaign.toml") << R"(name = "c"
+  std::ofstream(dir / "campaign.toml") << R"(name = "c"
 scenario = "tiny.toml"
 output = "out"
 parallel = 1
@@ -360,64 +362,64 @@ analyze_options = ["--no-agglomerates"]
 [grid]
 "contact_laws.0.friction" = [0.1, 0.4]
 )";
+}
+
+std::string bytes(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(Sweep, SweepKilledAloneMidRunAndRestartedAtOnceGivesIdenticalRuns) {
+  const fs::path reference = fresh_dir("reference");
+  write_long_campaign(reference);
+  ASSERT_EQ(wait_exit_code(start_sweep(reference / "campaign.toml", reference / "sweep.out")), 0)
+      << read(reference / "sweep.out");
+
+  const fs::path dir = fresh_dir("killed-alone");
+  write_long_campaign(dir);
+  const fs::path run = dir / "out" / "c" / "runs" / "run-000_friction=0.1";
+  const pid_t pid = start_sweep(dir / "campaign.toml", dir / "first.out");
+  const auto deadline = std::chrono::steady_clock::now() + 60s;
+  while (!fs::exists(run / "checkpoint.bin") && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(2ms);
+  ASSERT_TRUE(fs::exists(run / "checkpoint.bin")) << read(dir / "first.out");
+  ::kill(pid, SIGKILL);  // the sweep alone: its run is not signalled by us
+  wait_exit_code(pid);
+  const int code = wait_exit_code(start_sweep(dir / "campaign.toml", dir / "second.out"));
+  const std::string second = read(dir / "second.out");
+  ASSERT_EQ(code, 0) << second << read(run / "sweep.log");
+  EXPECT_EQ(second.find("FAILED"), std::string::npos) << second;
+  // The kill came mid-run, past a checkpoint: the restarted sweep resumed the run.
+  EXPECT_NE(second.find("run-000_friction=0.1 resumed from its checkpoint"), std::string::npos)
+      << second;
+
+  int compared = 0;
+  const fs::path reference_runs = reference / "out" / "c" / "runs";
+  for (const auto& entry : fs::recursive_directory_iterator(reference_runs)) {
+    if (!entry.is_regular_file()) continue;
+    const fs::path relative = fs::relative(entry.path(), reference_runs);
+    const std::string name = relative.filename().string();
+    if (name == "run.log" || name == "sweep.log") continue;
+    const fs::path other = dir / "out" / "c" / "runs" / relative;
+    EXPECT_TRUE(fs::exists(other)) << relative << " is missing";
+    // analysis/summary.json names its run folder: the same once the roots are swapped.
+    std::string expected = bytes(entry.path());
+    for (auto at = expected.find(reference.string()); at != std::string::npos;
+         at = expected.find(reference.string(), at + dir.string().size()))
+      expected.replace(at, reference.string().size(), dir.string());
+    EXPECT_TRUE(expected == bytes(other)) << relative << " differs";
+    ++compared;
   }
-
-  std::string bytes(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+  EXPECT_GT(compared, 20);
+  const fs::path runs = dir / "out" / "c" / "runs";
+  for (const auto& entry : fs::recursive_directory_iterator(runs)) {
+    if (!entry.is_regular_file()) continue;
+    EXPECT_TRUE(fs::exists(reference_runs / fs::relative(entry.path(), runs)))
+        << entry.path() << " is extra";
   }
-
-  TEST(Sweep, SweepKilledAloneMidRunAndRestartedAtOnceGivesIdenticalRuns) {
-    const fs::path reference = fresh_dir("reference");
-    write_long_campaign(reference);
-    ASSERT_EQ(wait_exit_code(start_sweep(reference / "campaign.toml", reference / "sweep.out")), 0)
-        << read(reference / "sweep.out");
-
-    const fs::path dir = fresh_dir("killed-alone");
-    write_long_campaign(dir);
-    const fs::path run = dir / "out" / "c" / "runs" / "run-000_friction=0.1";
-    const pid_t pid = start_sweep(dir / "campaign.toml", dir / "first.out");
-    const auto deadline = std::chrono::steady_clock::now() + 60s;
-    while (!fs::exists(run / "checkpoint.bin") && std::chrono::steady_clock::now() < deadline)
-      std::this_thread::sleep_for(2ms);
-    ASSERT_TRUE(fs::exists(run / "checkpoint.bin")) << read(dir / "first.out");
-    ::kill(pid, SIGKILL);  // the sweep alone: its run is not signalled by us
-    wait_exit_code(pid);
-    const int code = wait_exit_code(start_sweep(dir / "campaign.toml", dir / "second.out"));
-    const std::string second = read(dir / "second.out");
-    ASSERT_EQ(code, 0) << second << read(run / "sweep.log");
-    EXPECT_EQ(second.find("FAILED"), std::string::npos) << second;
-    // The kill came mid-run, past a checkpoint: the restarted sweep resumed the run.
-    EXPECT_NE(second.find("run-000_friction=0.1 resumed from its checkpoint"), std::string::npos)
-        << second;
-
-    int compared = 0;
-    const fs::path reference_runs = reference / "out" / "c" / "runs";
-    for (const auto& entry : fs::recursive_directory_iterator(reference_runs)) {
-      if (!entry.is_regular_file()) continue;
-      const fs::path relative = fs::relative(entry.path(), reference_runs);
-      const std::string name = relative.filename().string();
-      if (name == "run.log" || name == "sweep.log") continue;
-      const fs::path other = dir / "out" / "c" / "runs" / relative;
-      EXPECT_TRUE(fs::exists(other)) << relative << " is missing";
-      // analysis/summary.json names its run folder: the same once the roots are swapped.
-      std::string expected = bytes(entry.path());
-      for (auto at = expected.find(reference.string()); at != std::string::npos;
-           at = expected.find(reference.string(), at + dir.string().size()))
-        expected.replace(at, reference.string().size(), dir.string());
-      EXPECT_TRUE(expected == bytes(other)) << relative << " differs";
-      ++compared;
-    }
-    EXPECT_GT(compared, 20);
-    const fs::path runs = dir / "out" / "c" / "runs";
-    for (const auto& entry : fs::recursive_directory_iterator(runs)) {
-      if (!entry.is_regular_file()) continue;
-      EXPECT_TRUE(fs::exists(reference_runs / fs::relative(entry.path(), runs)))
-          << entry.path() << " is extra";
-    }
-  }
+}
 
 }  // namespace
 }  // namespace sg

@@ -25,6 +25,7 @@
 
 #include "scenes/scenario_files.h"
 #include "scenes/shear_cell_scenario.h"
+#include "test_locations.h"  // SOFTGRAIN_EXECUTABLE, SOFTGRAIN_SOURCE_DIR
 
 namespace sg {
 namespace {

@@ -23,6 +23,7 @@
 
 #include "io/run_lock.h"
 #include "scenes/scenario_files.h"
+#include "test_locations.h"  // SOFTGRAIN_EXECUTABLE, SOFTGRAIN_SOURCE_DIR
 
 namespace sg {
 namespace {

@@ -9,6 +9,7 @@
 #include "scenario/scenario.h"
 #include "solver/explicit_solver.h"
 #include "solver/stable_time_step.h"
+#include "test_locations.h"  // SOFTGRAIN_EXECUTABLE, SOFTGRAIN_SOURCE_DIR
 
 namespace sg {
 namespace {

@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "model/model.h"
 #include "scenario/scenario.h"
+#include "test_locations.h"  // SOFTGRAIN_EXECUTABLE, SOFTGRAIN_SOURCE_DIR
 
 namespace sg {
 namespace {

@@ -15,6 +15,7 @@
 #include "run/run.h"
 #include "scenario/scenario.h"
 #include "scenes/scenario_files.h"
+#include "test_locations.h"  // SOFTGRAIN_EXECUTABLE, SOFTGRAIN_SOURCE_DIR
 
 namespace sg {
 namespace {

@@ -27,6 +27,7 @@
 
 #include "campaign/slurm_commands.h"
 #include "scenes/tiny_scenario.h"
+#include "test_locations.h"  // SOFTGRAIN_EXECUTABLE, SOFTGRAIN_SOURCE_DIR
 
 namespace sg {
 namespace {
