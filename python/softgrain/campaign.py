@@ -3,6 +3,7 @@ through the campaign's process queue (src/campaign/run_queue.h)."""
 
 from __future__ import annotations
 
+import csv
 import os
 import sys
 from typing import Callable, Dict, List, Optional, Sequence
@@ -28,14 +29,16 @@ def read_campaign(path: str | os.PathLike) -> Dict[str, np.ndarray]:
     if os.path.isdir(path):
         path = os.path.join(path, "campaign.csv")
     try:
-        with open(path, encoding="utf-8") as file:
-            lines = file.read().splitlines()
+        with open(path, encoding="utf-8", newline="") as file:
+            # RFC 4180, as the sweep writes it: a cell holding a comma or a quote (a reason,
+            # a TOML string) is quoted, its quotes doubled.
+            lines = list(csv.reader(file))
     except OSError as error:
         raise RunReadError(f"{path}: {error}") from error
     if not lines:
         raise RunReadError(f"{path}: no header line")
-    names = lines[0].split(",")
-    rows = [line.split(",") for line in lines[1:]]
+    names = lines[0]
+    rows = lines[1:]
     for number, row in enumerate(rows, start=2):
         if len(row) != len(names):
             raise RunReadError(f"{path}:{number}: {len(row)} cells for {len(names)} columns")

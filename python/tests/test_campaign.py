@@ -1,6 +1,7 @@
 """Campaigns from Python: scenarios built in Python run through the campaign's process queue,
 and the table `softgrain sweep` gathers read as NumPy arrays."""
 
+import csv
 import copy
 import subprocess
 
@@ -63,13 +64,14 @@ def test_the_sweep_table_as_arrays(cli, tmp_path):
                    text=True, cwd=tmp_path)
     folder = tmp_path / "out" / "tiny"
     table = softgrain.read_campaign(folder)
-    lines = (folder / "campaign.csv").read_text().splitlines()
-    header = lines[0].split(",")
+    with open(folder / "campaign.csv", newline="") as file:
+        lines = list(csv.reader(file))  # RFC 4180: a reason with commas is one quoted cell
+    header = lines[0]
     assert list(table) == header and len(table["id"]) == len(lines) - 1 == 2
     assert table["id"].dtype.kind == "U" and table["status"].dtype.kind == "U"
     np.testing.assert_array_equal(table["materials.0.young"], [10.0, 20.0])
     for k, name in enumerate(header):
-        cell = lines[1].split(",")[k]
+        cell = lines[1][k]
         if table[name].dtype.kind == "f":
             assert (np.isnan(table[name][0]) and cell == "") or table[name][0] == float(cell)
         else:

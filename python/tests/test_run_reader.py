@@ -95,7 +95,9 @@ def test_summary_is_read_after_analyze(cli_run, cli, tmp_path):
     shutil.copytree(folder, copy)
     assert softgrain.open_run(copy).summary is None
     import subprocess
-    subprocess.run([cli, "analyze", str(copy)], check=True, capture_output=True)
+    # Exit status 3: analyzed, with a quantity the run asks for not measured (too short).
+    result = subprocess.run([cli, "analyze", str(copy)], capture_output=True, text=True)
+    assert result.returncode in (0, 3), result.stderr
     summary = softgrain.open_run(copy).summary
     assert isinstance(summary, dict) and summary  # its content is analyze's (docs/analysis.md)
 

@@ -48,16 +48,17 @@ void refuse_links_in(const fs::path& dir) {
   SG_VERIFY(!error, "cannot list folder '" << dir.string() << "': " << error.message());
 }
 
-// The scenario file a run.log names ("scenario = <path>", its second line; io/run_log.cpp),
+// The scenario file a run.log names ("scenario = <path>", in its header lines; run/run_log.cpp),
 // empty if there is none.
 fs::path scenario_of_run_log(const fs::path& dir) {
   std::ifstream in(dir / "run.log", std::ios::binary);
   std::string header, line;
   constexpr std::string_view kKey = "scenario = ";
-  if (!in || !std::getline(in, header) || header != kRunLogHeader || !std::getline(in, line) ||
-      !line.starts_with(kKey))
-    return {};
-  return line.substr(kKey.size());
+  if (!in || !std::getline(in, header) || header != kRunLogHeader) return {};
+  // The key lines before the first blank line (the version and commit come first).
+  while (std::getline(in, line) && !line.empty())
+    if (line.starts_with(kKey)) return line.substr(kKey.size());
+  return {};
 }
 
 // Whether the run.log's `recorded` scenario is `scenario_file`. The run.log holds the path as
