@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include "core/exit_status.h"
+
 namespace sg {
 namespace {
 
@@ -110,8 +112,15 @@ std::string slurm_array_script(const CampaignDef& campaign, const SlurmSettings&
     << "else\n"
     << "  note \"analyses $id (its simulation finished)\"\n"
     << "fi\n"
+    << "# Status " << kExitUnmeasured
+    << ": analysed, but what the run asks for (mu) could not be "
+       "measured: the run is\n# done without it (--status and --gather say why), not a failed "
+       "task.\n"
+    << "analyze_status=0\n"
     << "\"$SOFTGRAIN\" --threads \"$threads\" analyze \"$dir\"" << analyze_options
-    << " >> \"$log\" 2>&1 || failed analyze $?\n"
+    << " >> \"$log\" 2>&1 || analyze_status=$?\n"
+    << "[ $analyze_status -eq 0 ] || [ $analyze_status -eq " << kExitUnmeasured
+    << " ] || failed analyze $analyze_status\n"
     << "[ -f \"$dir/analysis/summary.json\" ] || failed analyze \"\"\n";
   return s.str();
 }

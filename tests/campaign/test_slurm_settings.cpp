@@ -193,6 +193,10 @@ extra = ["--constraint=avx2"]
   EXPECT_NE(s.find("-o runs --resume"), std::string::npos);
   EXPECT_NE(s.find("! -name scenario.toml -exec rm -rf"), std::string::npos);
   EXPECT_EQ(s.find("#SBATCH --account"), std::string::npos) << "not set, not written";
+  // analyze's status 3 (done, mu not measured) is not a failed task; any other failure is.
+  EXPECT_NE(s.find("[ $analyze_status -eq 0 ] || [ $analyze_status -eq 3 ] || failed analyze"),
+            std::string::npos)
+      << s;
 }
 
 TEST(SlurmCommands, ParsesSbatchSqueueAndSacct) {
