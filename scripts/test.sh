@@ -39,7 +39,7 @@ cmake -S . -B "$asan" $(generator_args "$asan") "${cmake_configure_args[@]}" \
 cmake --build "$asan" -j"$(nproc)" --target softgrain scenario_fuzzer softgrain_odr_check \
   "${fast_modules[@]}"
 phase "sanitizer build and one-definition-rule check done"
-labels=$(IFS='|'; echo "fuzz|${fast_modules[*]}")
+labels=$(IFS='|'; echo "fuzz|odr|${fast_modules[*]}")
 ASAN_OPTIONS=abort_on_error=1:detect_leaks=1 \
   UBSAN_OPTIONS=halt_on_error=1:abort_on_error=1:print_stacktrace=1 \
   OMP_WAIT_POLICY=PASSIVE SOFTGRAIN_FUZZ_TIMEOUT=300 \
