@@ -27,6 +27,7 @@
 
 #include "bindings.h"
 #include "core/error.h"
+#include "model/body_motion.h"
 #include "model/kinematics.h"
 #include "run/run_session.h"
 
@@ -287,24 +288,12 @@ py::dict bodies(const PySimulation& s) {
   py::list names;
   for (py::ssize_t b = 0; b < count; ++b) {
     const Body& body = model.bodies[static_cast<std::size_t>(b)];
-    Vec2 c(0, 0), v(0, 0);
+    const BodyMotion motion = body_motion(model, body);
+    const Vec2 c = motion.centre, v = motion.velocity;
     double angle = 0.0;
     if (body.kind == BodyKind::rigid) {
-      const auto r = static_cast<std::size_t>(body.rigid_index);
-      c = Vec2(model.rigid.x[r], model.rigid.y[r]);
-      v = Vec2(model.rigid.vx[r], model.rigid.vy[r]);
-      angle = model.rigid.theta[r];
+      angle = model.rigid.theta[static_cast<std::size_t>(body.rigid_index)];
     } else {
-      double m = 0.0;
-      for (int i = body.node_begin; i < body.node_end; ++i) {
-        const auto k = static_cast<std::size_t>(i);
-        m += model.nodes.mass[k];
-        c += model.nodes.mass[k] * Vec2(model.nodes.ref_x[k] + model.nodes.ux[k],
-                                        model.nodes.ref_y[k] + model.nodes.uy[k]);
-        v += model.nodes.mass[k] * Vec2(model.nodes.vx[k], model.nodes.vy[k]);
-      }
-      c /= m;
-      v /= m;
       const BodyRotation q = body_rotation(model, static_cast<BodyId>(b));
       angle = std::atan2(q.b, q.a);
     }

@@ -15,19 +15,13 @@
 #include "campaign/slurm_script.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
+#include "io/text_file.h"
 #include "scenario/scenario.h"
 
 namespace sg {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 std::string trimmed(const std::string& s) {
   const auto a = s.find_first_not_of(" \t\r\n");
@@ -86,7 +80,7 @@ std::vector<std::size_t> parse_array_indices(std::string spec) {
 
 std::vector<JobRecord> read_job_records(const fs::path& folder) {
   std::vector<JobRecord> records;
-  std::istringstream in(read_text(folder / kSlurmJobsFile));
+  std::istringstream in(read_text_or_empty(folder / kSlurmJobsFile));
   for (std::string line; std::getline(in, line);) {
     if (line.empty() || line[0] == '#') continue;
     std::istringstream fields(line);
@@ -110,7 +104,7 @@ std::string utc_now() {
 }
 
 void record_job(const fs::path& folder, const std::string& job_id, const std::string& array) {
-  std::string text = read_text(folder / kSlurmJobsFile);
+  std::string text = read_text_or_empty(folder / kSlurmJobsFile);
   if (text.empty())
     text = "# softgrain sweep --slurm: one line per submission: job id, array (run indices), UTC\n";
   text += job_id + " " + array + " " + utc_now() + "\n";
@@ -158,7 +152,7 @@ std::string progress_detail(const fs::path& dir) {
 // Why a run failed: sweep.failed (which command, its status), then the last error line of
 // its log (sweep.log: softgrain's stdout and stderr).
 std::string failure_detail(const fs::path& dir) {
-  std::string why = trimmed(read_text(dir / "sweep.failed"));
+  std::string why = trimmed(read_text_or_empty(dir / "sweep.failed"));
   why = why.substr(0, why.find('\n'));
   const std::string error = last_line(dir / "sweep.log", true);
   if (!error.empty()) why += (why.empty() ? "" : ": ") + error;

@@ -16,6 +16,7 @@
 #include "core/exit_status.h"
 #include "io/atomic_file.h"
 #include "io/run_lock.h"
+#include "io/text_file.h"
 #include "scenario/scenario.h"
 
 #ifndef SOFTGRAIN_PLOT_CAMPAIGN_SCRIPT
@@ -30,13 +31,6 @@ namespace fs = std::filesystem;
 constexpr const char* kFailedMarker = "sweep.failed";
 constexpr const char* kSummary = "analysis/summary.json";
 constexpr const char* kPython = "/usr/bin/python3";  // Debian's, with numpy and matplotlib
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // POSIX shell single quotes: safe for any path.
 std::string shell_quoted(const std::string& s) {
@@ -101,7 +95,7 @@ void write_run_scenarios(const CampaignDef& campaign, const fs::path& folder) {
         if (entry.path().filename() != "scenario.toml") return true;
       return false;
     };
-    if (fs::exists(file) && read_text(file) != run.scenario_text && started()) {
+    if (fs::exists(file) && read_text_or_empty(file) != run.scenario_text && started()) {
       SG_THROW(campaign.file.string()
                << ": run " << run.id << ": '" << file.string()
                << "' differs from what the campaign now gives (the campaign file or its "
@@ -109,7 +103,7 @@ void write_run_scenarios(const CampaignDef& campaign, const fs::path& folder) {
                   "campaign another name, or delete '"
                << folder.string() << "' to start over");
     }
-    if (!fs::exists(file) || read_text(file) != run.scenario_text)
+    if (!fs::exists(file) || read_text_or_empty(file) != run.scenario_text)
       write_file_atomically(file, run.scenario_text);
   }
   // Every run's scenario must read: an out-of-range value (say young = -1) is reported now,
@@ -191,7 +185,7 @@ fs::path campaign_folder(const CampaignDef& campaign, const SweepOptions& option
 fs::path prepare_campaign_folder(const CampaignDef& campaign, const SweepOptions& options) {
   const fs::path folder = campaign_folder(campaign, options);
   fs::create_directories(folder);
-  write_file_atomically(folder / "campaign.toml", read_text(campaign.file));
+  write_file_atomically(folder / "campaign.toml", read_text_or_empty(campaign.file));
   write_run_scenarios(campaign, folder);
   return folder;
 }
@@ -411,7 +405,7 @@ void report_gathered(const CampaignDef& campaign, const fs::path& folder,
   for (std::size_t i = 0; i < campaign.runs.size(); ++i)
     if (progress.states[i] == RunState::failed)
       out << "  failed: " << campaign.runs[i].id << ": "
-          << read_text(campaign_run_folder(folder, campaign.runs[i]) / kFailedMarker);
+          << read_text_or_empty(campaign_run_folder(folder, campaign.runs[i]) / kFailedMarker);
   for (std::size_t i = 0; i < campaign.runs.size(); ++i)
     if (progress.states[i] == RunState::pending)
       out << "  missing: " << campaign.runs[i].id << " (not finished)\n";
