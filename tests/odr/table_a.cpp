@@ -16,4 +16,6 @@ Table::Table(int n) : columns(n) {}
 Table::~Table() = default;
 }  // namespace sg
 
-int columns_of_a_table() { return sg::Table(3).columns; }
+int columns_of_a_table() {
+  return sg::Table(3).columns;
+}
