@@ -294,7 +294,7 @@ void ContactSystem::evaluate_group(const Model& model, std::span<const ContactCa
   const ContactGroup& group = groups_[g];
   const int slave = candidates[group.begin].node;
   const BodyId master = segment_body_[static_cast<std::size_t>(candidates[group.begin].segment)];
-  const Body& master_body = model.bodies[static_cast<std::size_t>(master)];
+  const Body& master_body = model.body(master);
   const BodyId slave_body = node_body_[static_cast<std::size_t>(slave)];
   const GroupProjection projection = project_group(model, candidates, group, master_body);
   const NodeProjection& proj = projection.projection;
@@ -309,7 +309,7 @@ void ContactSystem::evaluate_group(const Model& model, std::span<const ContactCa
   }
   const double ds = slip_increment(model, slave, master_body, projection);
   const ContactLawParams& law = per_pass_laws_.at(
-      model.bodies[static_cast<std::size_t>(slave_body)].material, master_body.material);
+      model.body(slave_body).material, master_body.material);
   ContactKinematics kin;
   kin.normal_gap = proj.gap;
   kin.slip_increment = h.active ? ds : 0.0;
@@ -336,7 +336,7 @@ void ContactSystem::evaluate_group(const Model& model, std::span<const ContactCa
 
 void ContactSystem::add_force_at_point(Model& model, int point, const Vec2& f, const Vec2& at) {
   const BodyId b = node_body_[static_cast<std::size_t>(point)];
-  const Body& body = model.bodies[static_cast<std::size_t>(b)];
+  const Body& body = model.body(b);
   if (body.kind == BodyKind::rigid) {
     const auto r = static_cast<std::size_t>(body.rigid_index);
     model.rigid.fx[r] += f.x();
@@ -366,7 +366,7 @@ ContactStepResult ContactSystem::scatter_forces(Model& model) {
     if (!r.active) continue;
     const Vec2 tangent = perp(r.normal);
     const Vec2 f = r.length * (r.traction.normal * r.normal + r.traction.tangential * tangent);
-    const Body& master = model.bodies[static_cast<std::size_t>(r.master_body)];
+    const Body& master = model.body(r.master_body);
     const int local = r.master_segment - master.contour_begin;
     const int a = r.master_segment;
     const int b = master.contour_begin + (local + 1) % master.contour_count();

@@ -12,11 +12,12 @@ double EnergyLedger::residual() const {
          servo_dissipated;
 }
 
-ExplicitSolver::ExplicitSolver(Model& model, ContactSystem* contacts)
-    : model_(model), contacts_(contacts) {
-  if (model.implicit_viscosity)
-    implicit_ = std::make_unique<ImplicitViscosity>(model, model.implicit_viscosity_tolerance,
-                                                    model.implicit_viscosity_refactor_threshold);
+ExplicitSolver::ExplicitSolver(Model& model, ContactSystem* contacts,
+                               const IntegratorParams& integrator)
+    : model_(model), contacts_(contacts), integrator_(integrator) {
+  if (integrator.implicit_viscosity)
+    implicit_ = std::make_unique<ImplicitViscosity>(model, integrator.imex_tolerance,
+                                                    integrator.imex_refactor_threshold);
 }
 
 ExplicitSolver::~ExplicitSolver() = default;
@@ -70,7 +71,7 @@ void ExplicitSolver::apply_external_forces() {
   const int body_count = static_cast<int>(model_.bodies.size());
 #pragma omp parallel for schedule(static)
   for (int b = 0; b < body_count; ++b) {
-    const Body& body = model_.bodies[static_cast<std::size_t>(b)];
+    const Body& body = model_.body(b);
     // Gravity acts on the physical mass (mass scaling changes the inertia only).
     const double bgx = gx / body.mass_scale, bgy = gy / body.mass_scale;
     for (int k = body.node_begin; k < body.node_end; ++k) {

@@ -56,6 +56,7 @@
 #include "model/internal_forces.h"
 #include "model/model.h"
 #include "solver/implicit_viscosity.h"
+#include "solver/integrator_params.h"
 #include "solver/step_profile.h"
 
 namespace sg {
@@ -109,9 +110,10 @@ struct SolverState {
 
 class ExplicitSolver {
  public:
-  // `contacts` may be null (free grains). With Model::implicit_viscosity the damped deformable
-  // bodies' viscous forces are implicit (IMEX, solver/implicit_viscosity.h).
-  explicit ExplicitSolver(Model& model, ContactSystem* contacts = nullptr);
+  // `contacts` may be null (free grains). With integrator.implicit_viscosity the damped
+  // deformable bodies' viscous forces are implicit (IMEX, solver/implicit_viscosity.h).
+  explicit ExplicitSolver(Model& model, ContactSystem* contacts = nullptr,
+                          const IntegratorParams& integrator = {});
   ~ExplicitSolver();
   ExplicitSolver(const ExplicitSolver&) = delete;
   ExplicitSolver& operator=(const ExplicitSolver&) = delete;
@@ -123,6 +125,7 @@ class ExplicitSolver {
   const SolverState& state() const { return state_; }
   SolverState& state() { return state_; }
   Model& model() { return model_; }
+  const IntegratorParams& integrator() const { return integrator_; }
   // Wall time per phase of the steps taken so far (timing only, see step_profile.h); the run
   // loop books its own phases (step control, outputs) into the same profile.
   const StepProfile& profile() const { return profile_; }
@@ -136,6 +139,7 @@ class ExplicitSolver {
  private:
   Model& model_;
   ContactSystem* contacts_;
+  IntegratorParams integrator_;
   SolverState state_;
   SolverPendingIncrements pending_;
   StepProfile profile_;

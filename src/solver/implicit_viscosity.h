@@ -48,7 +48,8 @@
 
 namespace sg {
 
-// Which bodies the IMEX integrator treats implicitly: deformable, damped, without node drives.
+// Which bodies the IMEX integrator treats implicitly: the damped ones (Model::is_damped)
+// without node drives.
 bool has_implicit_viscosity(const Model& model, BodyId body);
 
 struct ViscousSolveStatistics {

@@ -85,7 +85,7 @@ void advance_body_explicitly(const Model& model, NodeState& n, const Body& body,
 void advance_body_implicitly(const Model& model, NodeState& n, BodyId b, double h,
                              ImplicitViscosity& viscosity, double* increment_x, double* increment_y,
                              BodySums& sums) {
-  const Body& body = model.bodies[static_cast<std::size_t>(b)];
+  const Body& body = model.body(b);
   const double bgx = model.gravity.x() / body.mass_scale, bgy = model.gravity.y() / body.mass_scale;
   const auto o = static_cast<std::size_t>(body.node_begin);
   double* dvx = increment_x + o;
@@ -135,7 +135,7 @@ ExplicitSolver::NodeUpdate ExplicitSolver::update_node_velocities(const StepSize
   const int body_count = static_cast<int>(model_.bodies.size());
 #pragma omp parallel for schedule(dynamic)
   for (int b = 0; b < body_count; ++b) {
-    const Body& body = model_.bodies[static_cast<std::size_t>(b)];
+    const Body& body = model_.body(b);
     BodySums sums;
     if (implicit_ && has_implicit_viscosity(model_, b))
       advance_body_implicitly(model_, n, b, h, *implicit_, increment_x_.data(), increment_y_.data(),
@@ -178,10 +178,10 @@ ExplicitSolver::ServoPower ExplicitSolver::advance_node_carriers(double h,
     const NodeDrive& nd = model_.node_drives[d];
     for (std::size_t c = 0; c < 2; ++c) {
       SG_VERIFY(nd.mode[c] != DriveMode::force,
-                "body '" << model_.bodies[static_cast<std::size_t>(nd.body)].name
+                "body '" << model_.body(nd.body).name
                          << "': a node drive cannot impose a constant force (use load)");
       if (nd.mode[c] != DriveMode::load) continue;
-      SG_VERIFY(!nd.nodes.empty(), "body '" << model_.bodies[static_cast<std::size_t>(nd.body)].name
+      SG_VERIFY(!nd.nodes.empty(), "body '" << model_.body(nd.body).name
                                             << "': a load-driven node drive has no nodes");
       // The carrier: mass, momentum and received force of its nodes, summed in node order
       // (serial: the same bits on any number of threads).
@@ -216,7 +216,7 @@ void ExplicitSolver::update_node_positions(double dt) {
   body_probes_.assign(model_.bodies.size(), 0.0);
 #pragma omp parallel for schedule(static)
   for (int b = 0; b < body_count; ++b) {
-    const Body& body = model_.bodies[static_cast<std::size_t>(b)];
+    const Body& body = model_.body(b);
     // A probe that becomes NaN iff some updated value is not finite (0 * inf = NaN).
     double finite_probe = 0.0;
     for (int k = body.node_begin; k < body.node_end; ++k) {

@@ -46,7 +46,8 @@ StepController::StepController(ExplicitSolver& solver, ContactSystem* contacts,
 
 void StepController::estimate() {
   const bool reduced = state_.dt > 0.0 && state_.dt < state_.stable_dt;
-  estimate_ = estimate_stable_time_step(solver_.model(), params_.safety, contact_stiffness_);
+  estimate_ = estimate_stable_time_step(solver_.model(), params_.safety, contact_stiffness_,
+                                       solver_.integrator());
   state_.stable_dt = estimate_.dt;
   if (first_stable_dt_ == 0.0) first_stable_dt_ = estimate_.dt;
   if (params_.on_step_collapse && !collapse_reported_ &&

@@ -97,7 +97,7 @@ TEST(Servo, FreeBodyReachesTerminalVelocityAndTheLedgerCloses) {
   steel.density = 2.0;
   const MaterialId m = model.add_material(steel);
   const BodyId b = model.add_rigid_body("block", make_rectangle(Vec2(0, 0), Vec2(2, 1), 0.25), m);
-  const auto r = static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index);
+  const auto r = static_cast<std::size_t>(model.body(b).rigid_index);
   const double mass = model.rigid.mass[r];  // 2 * 2 * 1
   ASSERT_NEAR(mass, 4.0, 1e-12);
   RigidDrive& d = model.rigid.drive[r];

@@ -93,7 +93,7 @@ TEST(DeformablePressure, TopStripCarriesThePressureAndTheLedgerCloses) {
   EXPECT_EQ(s.shear_cell->normal_load, NormalLoad::pressure);
   Model model = build_model(s);
   const BodyId top = body_named(model, "top");
-  const Body& top_body = model.bodies[static_cast<std::size_t>(top)];
+  const Body& top_body = model.body(top);
   ASSERT_GE(top_body.node_drive, 0);
   const NodeDrive& drive = model.node_drives[static_cast<std::size_t>(top_body.node_drive)];
   EXPECT_EQ(drive.mode[0], DriveMode::velocity);
@@ -101,7 +101,7 @@ TEST(DeformablePressure, TopStripCarriesThePressureAndTheLedgerCloses) {
   EXPECT_DOUBLE_EQ(drive.load[1](100.0), -kPressure * kLength);
   EXPECT_DOUBLE_EQ(drive.load_damping[1], 2.0);
   const NodeDrive& bottom_drive = model.node_drives[static_cast<std::size_t>(
-      model.bodies[static_cast<std::size_t>(body_named(model, "bottom"))].node_drive)];
+      model.body(body_named(model, "bottom")).node_drive)];
   EXPECT_EQ(bottom_drive.mode[1], DriveMode::velocity);  // held: only the top is loaded
 
   {
@@ -113,7 +113,7 @@ TEST(DeformablePressure, TopStripCarriesThePressureAndTheLedgerCloses) {
     const Model by_default =
         build_model(load_scenario(scenes::write_text_file(dir / "default.toml", text)));
     const NodeDrive& d = by_default.node_drives[static_cast<std::size_t>(
-        by_default.bodies[static_cast<std::size_t>(top)].node_drive)];
+        by_default.body(top).node_drive)];
     const double height = by_default.nodes.ref_y[static_cast<std::size_t>(d.nodes.front())] - 1.0;
     EXPECT_DOUBLE_EQ(d.load_damping[1],
                      servo_damping_estimate(10.0, 0.45, height, kLength, 2000.0, 0.25, 1.0, 8.0));

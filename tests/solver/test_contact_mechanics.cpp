@@ -211,7 +211,7 @@ TEST(Periodicity, BlockOnAStripsClosingSegmentFeelsWhatItFeelsElsewhere) {
     ExplicitSolver solver(model, &contacts);
     solver.step(1e-4);
     const auto r =
-        static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(block)].rigid_index);
+        static_cast<std::size_t>(model.body(block).rigid_index);
     double deepest = 0.0;
     for (const ContactRecord& c : contacts.records())
       deepest = std::min(deepest, c.gap);

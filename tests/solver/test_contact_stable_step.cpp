@@ -167,7 +167,7 @@ TEST(ContactStableStep, BondedBlocksPulledSlowlyNeitherDissipateNorCreateEnergy)
   }
   const EnergyLedger& e = solver.state().energy;
   const std::size_t r =
-      static_cast<std::size_t>(s.model.bodies[static_cast<std::size_t>(s.bottom)].rigid_index);
+      static_cast<std::size_t>(s.model.body(s.bottom).rigid_index);
   std::printf(
       "pulled to t = %.3f: force %.4f, bonds %zu, dissipated %.3g, residual %.3g, "
       "external work %.3g\n",

@@ -38,7 +38,7 @@ BodyId add_flat_strip(Model& model, MaterialId material, double drift) {
 
 void hold_back_face(Model& model, BodyId strip) {
   NodeDrive& d = model.node_drives[static_cast<std::size_t>(
-      model.bodies[static_cast<std::size_t>(strip)].node_drive)];
+      model.body(strip).node_drive)];
   for (int c = 0; c < 2; ++c) {
     d.mode[c] = DriveMode::velocity;
     d.velocity[c] = PiecewiseLinear::constant(0.0);
@@ -77,11 +77,11 @@ TEST(DeformableStrip, BlockOnTheSeamFeelsWhatItFeelsElsewhere) {
     for (int k = 0; k < 200; ++k)
       solver.step(dt);
     const auto r =
-        static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(block)].rigid_index);
+        static_cast<std::size_t>(model.body(block).rigid_index);
     double deepest = 0.0;
     for (const ContactRecord& c : contacts.records())
       deepest = std::min(deepest, c.gap);
-    const Body& body = model.bodies[static_cast<std::size_t>(strip)];
+    const Body& body = model.body(strip);
     double deepest_node = 0.0;  // how far the strip's surface moved down under the block
     for (int i = body.node_begin; i < body.boundary_end; ++i)
       deepest_node = std::min(deepest_node, node_position(model, i).y());
@@ -110,7 +110,7 @@ TEST(DeformableStrip, DrivenBackFaceBooksItsWorkAndTheLedgerCloses) {
   const MaterialId soft = model.add_material(strip_material(0.01));
   const BodyId strip = add_flat_strip(model, soft, 0.0);
   hold_back_face(model, strip);
-  const Body& body = model.bodies[static_cast<std::size_t>(strip)];
+  const Body& body = model.body(strip);
   NodeDrive& d = model.node_drives[static_cast<std::size_t>(body.node_drive)];
   d.velocity[0] = PiecewiseLinear{{0.0, 0.2}, {0.0, 0.5}};
   ExplicitSolver solver(model);

@@ -26,7 +26,7 @@ struct Impact {
     const BodyId floor =
         model.add_rigid_body("floor", make_rectangle(Vec2(-2, -1), Vec2(2, 0), 0.1), hard);
     scenes::fix_rigid(model, floor);
-    const Body& b = model.bodies[static_cast<std::size_t>(disc)];
+    const Body& b = model.body(disc);
     for (int i = b.node_begin; i < b.node_end; ++i)
       model.nodes.vy[static_cast<std::size_t>(i)] = -1.0;
     ContactLawParams law;

@@ -30,7 +30,7 @@ TEST(StripServo, LoadedBackFaceMovesAsOneReachesTerminalVelocityAndTheLedgerClos
   Model model;
   model.gravity = Vec2(0.0, -1.0);
   const BodyId strip = add_strip(model);
-  const Body& body = model.bodies[static_cast<std::size_t>(strip)];
+  const Body& body = model.body(strip);
   NodeDrive& d = model.node_drives[static_cast<std::size_t>(body.node_drive)];
   const double load = 5.0, c = 20.0;
   d.mode[0] = DriveMode::velocity;
@@ -98,7 +98,7 @@ TEST(StripServo, ForceModeOnNodesIsRefused) {
   const BodyId strip = add_strip(model);
   model
       .node_drives[static_cast<std::size_t>(
-          model.bodies[static_cast<std::size_t>(strip)].node_drive)]
+          model.body(strip).node_drive)]
       .mode[1] = DriveMode::force;
   ExplicitSolver solver(model);
   try {

@@ -47,7 +47,7 @@ std::unique_ptr<Scene> servo_strip() {
   model.gravity = Vec2(0.0, -1.0);
   const BodyId strip = scenes::add_flat_rubber_strip(model);
   NodeDrive& d = model.node_drives[static_cast<std::size_t>(
-      model.bodies[static_cast<std::size_t>(strip)].node_drive)];
+      model.body(strip).node_drive)];
   d.mode[0] = DriveMode::velocity;
   d.velocity[0] = PiecewiseLinear{{0.0, 0.2}, {0.0, 0.5}};
   d.mode[1] = DriveMode::load;
