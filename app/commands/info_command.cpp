@@ -25,18 +25,17 @@ void print_integrators(Model& model, ContactSystem* contacts, const ScenarioDef&
                        double contact_stiffness) {
   const IntegratorParams configured = integrator_params(scenario);
   std::cout << "  integrators (measured over 10 steps from the initial state):\n";
-  for (const IntegratorCost& c : compare_integrators(
-           model, contacts, scenario.time_step_safety, contact_stiffness, configured, 10)) {
+  for (const IntegratorCost& c : compare_integrators(model, contacts, scenario.time_step_safety,
+                                                     contact_stiffness, configured, 10)) {
     const bool is_configured = c.integrator.implicit_viscosity == configured.implicit_viscosity;
     const double steps_per_unit = 1.0 / c.stable.dt;
-    std::cout << "    " << std::left << std::setw(9) << c.integrator.name() << std::right
-              << " dt " << std::setprecision(3) << c.stable.dt << " ("
+    std::cout << "    " << std::left << std::setw(9) << c.integrator.name() << std::right << " dt "
+              << std::setprecision(3) << c.stable.dt << " ("
               << (c.stable.damping_limited ? "damping-limited" : "wave-speed-limited") << "), "
               << 1e3 * c.seconds_per_step << " ms/step, " << c.seconds_per_step * steps_per_unit
               << " s per time unit, "
               << c.seconds_per_step * steps_per_unit * scenario.duration / 3600.0 << " h for "
-              << scenario.duration << " time units" << (is_configured ? "  <- [time]" : "")
-              << "\n";
+              << scenario.duration << " time units" << (is_configured ? "  <- [time]" : "") << "\n";
   }
 }
 
@@ -53,10 +52,10 @@ int info(const std::string& file) {
   }
   std::string mass_scaling;
   if (scenario.mass_scaling_step > 0.0)
-    mass_scaling = describe(apply_mass_scaling(model, scenario.mass_scaling_step,
-                                               scenario.time_step_safety, contact_stiffness,
-                                               integrator_params(scenario)),
-                            model);
+    mass_scaling =
+        describe(apply_mass_scaling(model, scenario.mass_scaling_step, scenario.time_step_safety,
+                                    contact_stiffness, integrator_params(scenario)),
+                 model);
   const StableStep stable = estimate_stable_time_step(
       model, scenario.time_step_safety, contact_stiffness, integrator_params(scenario));
   const double bytes = static_cast<double>(model.node_count()) * 12 * sizeof(double) +

@@ -112,7 +112,7 @@ struct RigidDrive {
 //    nodes' common velocity (checkpointed with them). A pressure p on the back face of the
 //    upper strip is F = -p L on y.
 // The solver measures the reaction the drive applies and books its work
-// (solver/explicit_solver.h). Mode force is not supported on nodes.
+// (solver/stepper.h). Mode force is not supported on nodes.
 struct NodeDrive {
   BodyId body = -1;
   std::vector<int> nodes;  // global node indices, all in `body`, increasing

@@ -85,13 +85,10 @@ void add_strip(Model& model, const StripDef& strip, MaterialId material, double 
   const double pressure_force = above ? -period : period;
   if (strip.rigid) {
     const double thickness = std::abs(strip.back_y - strip.surface_y);
-    const double mass =
-        model.material(material).density * period * thickness;
+    const double mass = model.material(material).density * period * thickness;
     const double inertia = mass * (period * period + thickness * thickness) / 12.0;
     const BodyId b = model.add_rigid_strip(strip.name, surface, material, shift, mass, inertia);
-    RigidDrive& d =
-        model.rigid
-            .drive[static_cast<std::size_t>(model.body(b).rigid_index)];
+    RigidDrive& d = model.rigid.drive[static_cast<std::size_t>(model.body(b).rigid_index)];
     for (int k = 0; k < 3; ++k) {
       d.mode[k] = DriveMode::velocity;
       d.velocity[k] = PiecewiseLinear::constant(0.0);
@@ -104,8 +101,7 @@ void add_strip(Model& model, const StripDef& strip, MaterialId material, double 
   }
   const BodyId b =
       model.add_deformable_strip(strip.name, surface, shift, strip.back_y, material, params);
-  NodeDrive& d = model.node_drives[static_cast<std::size_t>(
-      model.body(b).node_drive)];
+  NodeDrive& d = model.node_drives[static_cast<std::size_t>(model.body(b).node_drive)];
   for (int k = 0; k < 2; ++k) {
     d.mode[k] = DriveMode::velocity;
     d.velocity[k] = PiecewiseLinear::constant(0.0);

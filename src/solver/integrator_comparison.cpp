@@ -2,8 +2,8 @@
 
 #include <chrono>
 
-#include "solver/explicit_solver.h"
 #include "solver/state_snapshot.h"
+#include "solver/stepper.h"
 
 namespace sg {
 
@@ -14,7 +14,7 @@ IntegratorCost measure(Model& model, ContactSystem* contacts, double safety,
   IntegratorCost cost;
   cost.integrator = integrator;
   cost.stable = estimate_stable_time_step(model, safety, contact_stiffness, integrator);
-  ExplicitSolver solver(model, contacts, integrator);
+  Stepper solver(model, contacts, integrator);
   StateSnapshot initial;
   capture_state(solver, contacts, initial);
   solver.step(cost.stable.dt);  // warm-up (first contact detection, factorizations)

@@ -8,8 +8,8 @@
 namespace sg {
 
 struct IntegratorParams {
-  bool implicit_viscosity = false;  // IMEX; false: explicit
-  double imex_tolerance = 1e-5;     // relative residual of the iterative solves (scenario.md)
+  bool implicit_viscosity = false;       // IMEX; false: explicit
+  double imex_tolerance = 1e-5;          // relative residual of the iterative solves (scenario.md)
   double imex_refactor_threshold = 0.1;  // objective model's preconditioner (implicit_viscosity.h)
 
   static IntegratorParams explicit_integrator() { return {}; }

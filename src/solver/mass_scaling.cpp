@@ -19,8 +19,7 @@ double mass_scale_for_step(double omega, double alpha, double target_step) {
 }
 
 MassScalingReport apply_mass_scaling(Model& model, double target_step, double safety,
-                                     double contact_stiffness,
-                                     const IntegratorParams& integrator) {
+                                     double contact_stiffness, const IntegratorParams& integrator) {
   SG_VERIFY(target_step > 0.0,
             "mass scaling: the target step " << target_step << " must be positive");
   SG_VERIFY(safety > 0.0 && safety <= 1.0,

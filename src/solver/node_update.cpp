@@ -1,10 +1,10 @@
-// The field nodes' phases of ExplicitSolver::step: the velocity update (free nodes, driven
-// nodes and load-driven carriers) and the position update. See explicit_solver.h.
+// The field nodes' phases of Stepper::step: the velocity update (free nodes, driven
+// nodes and load-driven carriers) and the position update. See stepper.h.
 #include <cmath>
 
 #include "core/error.h"
-#include "solver/explicit_solver.h"
 #include "solver/implicit_viscosity.h"
+#include "solver/stepper.h"
 
 namespace sg {
 
@@ -110,8 +110,8 @@ void advance_body_implicitly(const Model& model, NodeState& n, BodyId b, double 
 
 }  // namespace
 
-ExplicitSolver::NodeUpdate ExplicitSolver::update_node_velocities(const StepSizes& steps) {
-  const double h = steps.velocity;
+Stepper::NodeUpdate Stepper::update_node_velocities(const StepSizes& steps) {
+  const double h = steps.velocity_interval;
   NodeState& n = model_.nodes;
   const std::size_t drive_count = model_.node_drives.size();
   body_sums_.assign(kBodySums * model_.bodies.size() + kDriveSums * drive_count, 0.0);
@@ -170,8 +170,7 @@ ExplicitSolver::NodeUpdate ExplicitSolver::update_node_velocities(const StepSize
   return update;
 }
 
-ExplicitSolver::ServoPower ExplicitSolver::advance_node_carriers(double h,
-                                                                 double* drive_data) const {
+ServoPower Stepper::advance_node_carriers(double h, double* drive_data) const {
   ServoPower power;
   const NodeState& n = model_.nodes;
   for (std::size_t d = 0; d < model_.node_drives.size(); ++d) {
@@ -210,7 +209,7 @@ ExplicitSolver::ServoPower ExplicitSolver::advance_node_carriers(double h,
   return power;
 }
 
-void ExplicitSolver::update_node_positions(double dt) {
+void Stepper::update_node_positions(double dt) {
   NodeState& n = model_.nodes;
   const int body_count = static_cast<int>(model_.bodies.size());
   body_probes_.assign(model_.bodies.size(), 0.0);
@@ -230,7 +229,7 @@ void ExplicitSolver::update_node_positions(double dt) {
   if (model_.periodic_x) wrap_periodic_bodies();
 }
 
-void ExplicitSolver::finish_step(double dt) {
+void Stepper::finish_step(double dt) {
   state_.previous_dt = dt;
   state_.time += dt;
   ++state_.step;
@@ -240,7 +239,7 @@ void ExplicitSolver::finish_step(double dt) {
   if (finite_probe != 0.0 || !std::isfinite(finite_probe)) check_finite_velocities();
 }
 
-void ExplicitSolver::wrap_periodic_bodies() {
+void Stepper::wrap_periodic_bodies() {
   const double period = model_.x_max - model_.x_min;
   NodeState& n = model_.nodes;
   for (const Body& body : model_.bodies) {
@@ -275,7 +274,7 @@ void ExplicitSolver::wrap_periodic_bodies() {
   }
 }
 
-void ExplicitSolver::check_finite_velocities() const {
+void Stepper::check_finite_velocities() const {
   const NodeState& n = model_.nodes;
   for (const Body& body : model_.bodies)
     for (int i = body.node_begin; i < body.node_end; ++i) {

@@ -177,8 +177,7 @@ material = "soft"
   EXPECT_NEAR(m.rigid.mass[r], 2.0, 1e-12);
   EXPECT_NEAR(m.rigid.inertia[r], 2.0 / 6.0, 1e-12);  // m (a^2 + b^2) / 12
   EXPECT_EQ(square.contour_count(), 40);              // edges subdivided at h = 0.1
-  const Polygon triangle =
-      reference_contour(m, m.body(body_named(m, "triangle")));
+  const Polygon triangle = reference_contour(m, m.body(body_named(m, "triangle")));
   EXPECT_NEAR(signed_area(triangle), 0.75, 1e-12);
   EXPECT_NEAR((centroid(triangle) - Vec2(7.0 / 3.0, 0.5)).norm(), 0.0, 1e-12);
 

@@ -8,9 +8,9 @@
 #include "../scenes/free_grains.h"
 #include "core/error.h"
 #include "geometry/shapes.h"
-#include "solver/explicit_solver.h"
 #include "solver/mass_scaling.h"
 #include "solver/stable_time_step.h"
+#include "solver/stepper.h"
 
 namespace sg {
 namespace {
@@ -99,7 +99,7 @@ TEST(MassScaling, GravityActsOnThePhysicalMassAndTheLedgerBalances) {
   // still bring the step of the scaled model to the target.
   EXPECT_GE(estimate_stable_time_step(model, 0.8, k).dt, (1.0 - 1e-4) * 4.0 * physical_step);
 
-  ExplicitSolver solver(model);
+  Stepper solver(model);
   const double dt = 4.0 * physical_step;
   const int steps = 200;
   for (int i = 0; i < steps; ++i)
@@ -108,8 +108,7 @@ TEST(MassScaling, GravityActsOnThePhysicalMassAndTheLedgerBalances) {
   const Body& g = model.body(grain);
   for (int i = g.node_begin; i < g.node_end; ++i)
     ASSERT_NEAR(model.nodes.vy[static_cast<std::size_t>(i)], -t / s_grain, 1e-12 * t);
-  const auto r =
-      static_cast<std::size_t>(model.body(stone).rigid_index);
+  const auto r = static_cast<std::size_t>(model.body(stone).rigid_index);
   EXPECT_NEAR(model.rigid.vy[r], -t / s_stone, 1e-12 * t);
   const EnergyLedger& e = solver.state().energy;
   EXPECT_GT(e.external_work, 0.0);

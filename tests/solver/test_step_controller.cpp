@@ -17,7 +17,7 @@ namespace {
 struct Impact {
   Model model;
   std::unique_ptr<ContactSystem> contacts;
-  std::unique_ptr<ExplicitSolver> solver;
+  std::unique_ptr<Stepper> solver;
   Impact() {
     const MaterialId soft =
         model.add_material(scenes::elastic_material(MaterialLaw::neo_hookean, 0.002));
@@ -35,7 +35,7 @@ struct Impact {
     ContactSettings settings;
     settings.cutoff = 0.03;
     contacts = std::make_unique<ContactSystem>(model, scenes::single_law(model, law), settings);
-    solver = std::make_unique<ExplicitSolver>(model, contacts.get());
+    solver = std::make_unique<Stepper>(model, contacts.get());
   }
 };
 
