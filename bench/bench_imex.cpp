@@ -20,9 +20,9 @@
 
 #include "../tests/scenes/shear_cell_scenario.h"
 #include "scenario/scenario.h"
-#include "solver/explicit_solver.h"
 #include "solver/state_snapshot.h"
 #include "solver/step_controller.h"
+#include "solver/stepper.h"
 
 namespace sg {
 namespace {
@@ -63,7 +63,7 @@ const StateSnapshot& compacted_state() {
     const ScenarioDef s = imex_cell(0.02, DampingModel::objective, true);
     Model model = build_model(s);
     ContactSystem contacts(model, contact_law_table(s), contact_settings(s));
-    ExplicitSolver solver(model, &contacts);
+    Stepper solver(model, &contacts, integrator_params(s));
     StepController controller(solver, &contacts, StepControlParams{});
     while (solver.state().time < 3.0)
       controller.advance();
@@ -83,7 +83,7 @@ void ImexShearCell(benchmark::State& state) {
   const ScenarioDef s = imex_cell(alpha, damping_model, imex);
   Model model = build_model(s);
   ContactSystem contacts(model, contact_law_table(s), contact_settings(s));
-  ExplicitSolver solver(model, &contacts);
+  Stepper solver(model, &contacts, integrator_params(s));
   restore_state(start, solver, &contacts);
   StepControlParams params;
   params.reestimate_interval = 0;

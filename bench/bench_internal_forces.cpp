@@ -7,9 +7,9 @@
 #include <omp.h>
 
 #include "disc_set.h"
-#include "solver/explicit_solver.h"
 #include "solver/stable_time_step.h"
 #include "solver/step_profile.h"
+#include "solver/stepper.h"
 
 namespace sg {
 namespace {
@@ -19,7 +19,7 @@ void InternalForces(benchmark::State& state) {
   const int threads = static_cast<int>(state.range(1));
   omp_set_num_threads(threads);
   Model model = bench::disc_set(discs);
-  ExplicitSolver solver(model);
+  Stepper solver(model);
   const double dt = estimate_stable_time_step(model, 0.9).dt;
   solver.profile() = StepProfile{};
   for (auto _ : state) {

@@ -155,7 +155,7 @@ void KernelScalarReference(benchmark::State& state) {
   for (auto _ : state) {
 #pragma omp parallel for schedule(dynamic, 8)
     for (int b = 0; b < bodies; ++b) {
-      const auto o = static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].node_begin);
+      const auto o = static_cast<std::size_t>(model.body(b).node_begin);
       scenes::reference_body_internal_forces(
           model, b, n.ux.data() + o, n.uy.data() + o, n.vx.data() + o, n.vy.data() + o,
           n.fx.data() + o, n.fy.data() + o, true, n.viscous_fx.data() + o, n.viscous_fy.data() + o);

@@ -21,8 +21,8 @@
 
 #include "../tests/scenes/shear_cell_scenario.h"
 #include "scenario/scenario.h"
-#include "solver/explicit_solver.h"
 #include "solver/step_controller.h"
+#include "solver/stepper.h"
 
 namespace sg {
 namespace {
@@ -48,7 +48,7 @@ void ShearCellStep(benchmark::State& state) {
   const ScenarioDef scenario = bench_cell(grains);
   Model model = build_model(scenario);
   ContactSystem contacts(model, contact_law_table(scenario), contact_settings(scenario));
-  ExplicitSolver solver(model, &contacts);
+  Stepper solver(model, &contacts);
   StepController controller(solver, &contacts, StepControlParams{});
   while (solver.state().time < 1.0)  // the compaction stage: grains in contact
     controller.advance();

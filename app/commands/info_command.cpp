@@ -1,6 +1,5 @@
 // softgrain info SCENARIO: build the model and print its size, stable step and memory, and for
 // a damped model the step and the measured wall time per time unit of both integrators.
-#include <chrono>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -8,64 +7,36 @@
 #include "command_registry.h"
 #include "model/force_kernel.h"
 #include "scenario/scenario.h"
-#include "solver/explicit_solver.h"
+#include "solver/integrator_comparison.h"
 #include "solver/mass_scaling.h"
 #include "solver/stable_time_step.h"
-#include "solver/state_snapshot.h"
 
 namespace sg::app {
 namespace {
 
-bool has_damped_deformable_body(const Model& model) {
+bool has_damped_body(const Model& model) {
   for (std::size_t b = 0; b < model.bodies.size(); ++b)
-    if (model.bodies[b].kind == BodyKind::deformable &&
-        model.materials[static_cast<std::size_t>(model.bodies[b].material)].damping > 0.0)
-      return true;
+    if (model.is_damped(static_cast<BodyId>(b))) return true;
   return false;
 }
 
-// The stable step of `model` with the integrator `imex`, and the wall seconds per step measured
-// over a few steps from the initial state (restored after).
-struct IntegratorCost {
-  StableStep stable;
-  double seconds_per_step = 0.0;
-};
-IntegratorCost measure(Model& model, ContactSystem* contacts, const ScenarioDef& scenario,
-                       double contact_stiffness, bool imex) {
-  model.implicit_viscosity = imex;
-  IntegratorCost cost;
-  cost.stable = estimate_stable_time_step(model, scenario.time_step_safety, contact_stiffness);
-  ExplicitSolver solver(model, contacts);
-  StateSnapshot initial;
-  capture_state(solver, contacts, initial);
-  constexpr int kSteps = 10;
-  solver.step(cost.stable.dt);  // warm-up (first contact detection, factorizations)
-  const auto start = std::chrono::steady_clock::now();
-  for (int k = 0; k < kSteps; ++k)
-    solver.step(cost.stable.dt);
-  cost.seconds_per_step =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / kSteps;
-  restore_state(initial, solver, contacts);
-  return cost;
-}
-
+// The integrators compared on the model's initial state; the model is left as it was.
 void print_integrators(Model& model, ContactSystem* contacts, const ScenarioDef& scenario,
                        double contact_stiffness) {
-  const bool configured = model.implicit_viscosity;
+  const IntegratorParams configured = integrator_params(scenario);
   std::cout << "  integrators (measured over 10 steps from the initial state):\n";
-  for (const bool imex : {false, true}) {
-    const IntegratorCost c = measure(model, contacts, scenario, contact_stiffness, imex);
+  for (const IntegratorCost& c : compare_integrators(model, contacts, scenario.time_step_safety,
+                                                     contact_stiffness, configured, 10)) {
+    const bool is_configured = c.integrator.implicit_viscosity == configured.implicit_viscosity;
     const double steps_per_unit = 1.0 / c.stable.dt;
-    std::cout << "    " << std::left << std::setw(9) << (imex ? "imex" : "explicit") << std::right
-              << " dt " << std::setprecision(3) << c.stable.dt << " ("
+    std::cout << "    " << std::left << std::setw(9) << c.integrator.name() << std::right << " dt "
+              << std::setprecision(3) << c.stable.dt << " ("
               << (c.stable.damping_limited ? "damping-limited" : "wave-speed-limited") << "), "
               << 1e3 * c.seconds_per_step << " ms/step, " << c.seconds_per_step * steps_per_unit
               << " s per time unit, "
               << c.seconds_per_step * steps_per_unit * scenario.duration / 3600.0 << " h for "
-              << scenario.duration << " time units" << (imex == configured ? "  <- [time]" : "")
-              << "\n";
+              << scenario.duration << " time units" << (is_configured ? "  <- [time]" : "") << "\n";
   }
-  model.implicit_viscosity = configured;
 }
 
 int info(const std::string& file) {
@@ -81,11 +52,12 @@ int info(const std::string& file) {
   }
   std::string mass_scaling;
   if (scenario.mass_scaling_step > 0.0)
-    mass_scaling = describe(apply_mass_scaling(model, scenario.mass_scaling_step,
-                                               scenario.time_step_safety, contact_stiffness),
-                            model);
-  const StableStep stable =
-      estimate_stable_time_step(model, scenario.time_step_safety, contact_stiffness);
+    mass_scaling =
+        describe(apply_mass_scaling(model, scenario.mass_scaling_step, scenario.time_step_safety,
+                                    contact_stiffness, integrator_params(scenario)),
+                 model);
+  const StableStep stable = estimate_stable_time_step(
+      model, scenario.time_step_safety, contact_stiffness, integrator_params(scenario));
   const double bytes = static_cast<double>(model.node_count()) * 12 * sizeof(double) +
                        static_cast<double>(model.gauss_rows.entries()) * (4 * sizeof(double) + 4) +
                        static_cast<double>(model.node_rows.entries()) * (4 * sizeof(double) + 4);
@@ -100,15 +72,15 @@ int info(const std::string& file) {
   if (stable.limiting_body >= 0)
     std::cout << "  stable step:   " << stable.dt << " ("
               << (stable.damping_limited ? "damping-limited" : "wave-speed-limited") << ", body '"
-              << model.bodies[static_cast<std::size_t>(stable.limiting_body)].name << "'; "
-              << (model.implicit_viscosity ? "imex" : "explicit") << " integrator)\n"
+              << model.body(stable.limiting_body).name << "'; "
+              << integrator_params(scenario).name() << " integrator)\n"
               << "  steps:         " << static_cast<long>(scenario.duration / stable.dt) << " for "
               << scenario.duration << " time units\n";
   if (!mass_scaling.empty()) std::cout << "  " << mass_scaling << "\n";
   std::cout << "  memory:        " << bytes / 1048576.0 << " MiB (node state and shape rows)\n";
   std::cout << "  force kernel:  " << force_kernel().isa
             << " (SOFTGRAIN_SIMD=default selects the baseline one)\n";
-  if (stable.limiting_body >= 0 && has_damped_deformable_body(model))
+  if (stable.limiting_body >= 0 && has_damped_body(model))
     print_integrators(model, contacts.get(), scenario, contact_stiffness);
   return 0;
 }

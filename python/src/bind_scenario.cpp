@@ -62,11 +62,11 @@ py::dict info(const Scenario& s) {
   if (stable.limiting_body >= 0) {
     d["stable_step"] = stable.dt;
     d["step_limit"] = stable.damping_limited ? "damping-limited" : "wave-speed-limited";
-    d["limiting_body"] = model.bodies[static_cast<std::size_t>(stable.limiting_body)].name;
+    d["limiting_body"] = model.body(stable.limiting_body).name;
     d["steps"] = static_cast<long>(s.def.duration / stable.dt);
   }
   d["first_step"] = sim->first_dt;
-  d["integrator"] = model.implicit_viscosity ? "imex" : "explicit";
+  d["integrator"] = sim->solver.integrator().name();
   d["duration"] = s.def.duration;
   if (!sim->mass_scaling_note.empty()) d["mass_scaling"] = sim->mass_scaling_note.substr(2);
   const double bytes = static_cast<double>(model.node_count()) * 12 * sizeof(double) +

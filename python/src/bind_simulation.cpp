@@ -287,7 +287,7 @@ py::dict bodies(const PySimulation& s) {
   py::array_t<bool> rigid(count);
   py::list names;
   for (py::ssize_t b = 0; b < count; ++b) {
-    const Body& body = model.bodies[static_cast<std::size_t>(b)];
+    const Body& body = model.body(static_cast<BodyId>(b));
     const BodyMotion motion = body_motion(model, body);
     const Vec2 c = motion.centre, v = motion.velocity;
     double angle = 0.0;

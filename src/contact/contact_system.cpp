@@ -143,11 +143,8 @@ void ContactSystem::check_segment_widths(const Model& model) const {
     }
 }
 
-ContactStepResult ContactSystem::add_contact_forces(Model& model, double time_step) {
-  // The run's first evaluation (no previous positions; also after a restore of the state
-  // before it): where bonded laws form their initial bonds.
-  first_evaluation_ = previous_positions_.empty();
-  time_step_ = time_step;
+ContactStepResult ContactSystem::add_contact_forces(Model& model,
+                                                    const ContactEvaluation& evaluation) {
   if (damped_ && body_mass_.empty()) update_body_masses(model);
   update_geometry(model);
   const BroadPhaseInput input{positions_, node_body_, segment_start_, segment_end_, segment_body_};
@@ -169,7 +166,7 @@ ContactStepResult ContactSystem::add_contact_forces(Model& model, double time_st
   const int group_count = static_cast<int>(groups_.size());
 #pragma omp parallel for schedule(static)
   for (int g = 0; g < group_count; ++g)
-    evaluate_group(model, candidates, static_cast<std::size_t>(g));
+    evaluate_group(model, candidates, static_cast<std::size_t>(g), evaluation);
 
   const ContactStepResult result = scatter_forces(model);
   // A swap, not a copy: positions_ is recomputed in full at the next evaluation.
@@ -290,11 +287,11 @@ double ContactSystem::slip_increment(const Model& model, int slave, const Body& 
 }
 
 void ContactSystem::evaluate_group(const Model& model, std::span<const ContactCandidate> candidates,
-                                   std::size_t g) {
+                                   std::size_t g, const ContactEvaluation& evaluation) {
   const ContactGroup& group = groups_[g];
   const int slave = candidates[group.begin].node;
   const BodyId master = segment_body_[static_cast<std::size_t>(candidates[group.begin].segment)];
-  const Body& master_body = model.bodies[static_cast<std::size_t>(master)];
+  const Body& master_body = model.body(master);
   const BodyId slave_body = node_body_[static_cast<std::size_t>(slave)];
   const GroupProjection projection = project_group(model, candidates, group, master_body);
   const NodeProjection& proj = projection.projection;
@@ -308,15 +305,15 @@ void ContactSystem::evaluate_group(const Model& model, std::span<const ContactCa
     return;
   }
   const double ds = slip_increment(model, slave, master_body, projection);
-  const ContactLawParams& law = per_pass_laws_.at(
-      model.bodies[static_cast<std::size_t>(slave_body)].material, master_body.material);
+  const ContactLawParams& law =
+      per_pass_laws_.at(model.body(slave_body).material, master_body.material);
   ContactKinematics kin;
   kin.normal_gap = proj.gap;
   kin.slip_increment = h.active ? ds : 0.0;
-  kin.time_step = time_step_;
+  kin.time_step = evaluation.previous_step;
   kin.effective_mass = law.damping_ratio > 0.0 ? effective_mass(slave_body, master) : 0.0;
   kin.initial_length = initial_tributary_[static_cast<std::size_t>(slave)];
-  kin.first_evaluation = first_evaluation_;
+  kin.first_evaluation = evaluation.first;
   const ContactTraction tr = evaluate_contact_law(law, kin, h);
   new_history_[g] = h;
   r.slave_point = slave;
@@ -336,7 +333,7 @@ void ContactSystem::evaluate_group(const Model& model, std::span<const ContactCa
 
 void ContactSystem::add_force_at_point(Model& model, int point, const Vec2& f, const Vec2& at) {
   const BodyId b = node_body_[static_cast<std::size_t>(point)];
-  const Body& body = model.bodies[static_cast<std::size_t>(b)];
+  const Body& body = model.body(b);
   if (body.kind == BodyKind::rigid) {
     const auto r = static_cast<std::size_t>(body.rigid_index);
     model.rigid.fx[r] += f.x();
@@ -366,7 +363,7 @@ ContactStepResult ContactSystem::scatter_forces(Model& model) {
     if (!r.active) continue;
     const Vec2 tangent = perp(r.normal);
     const Vec2 f = r.length * (r.traction.normal * r.normal + r.traction.tangential * tangent);
-    const Body& master = model.bodies[static_cast<std::size_t>(r.master_body)];
+    const Body& master = model.body(r.master_body);
     const int local = r.master_segment - master.contour_begin;
     const int a = r.master_segment;
     const int b = master.contour_begin + (local + 1) % master.contour_count();

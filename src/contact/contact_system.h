@@ -86,6 +86,15 @@ struct ContactStepResult {
   int active_contacts = 0;
 };
 
+// What an evaluation of the contacts needs to know of the step it belongs to.
+struct ContactEvaluation {
+  // The time since the previous evaluation, t_n - t_n-1: contact damping turns the slip and
+  // gap increments into rates with it (0: no damping rates).
+  double previous_step = 0.0;
+  // The run's first evaluation: where bonded and cohesive-zone laws form their initial bonds.
+  bool first = false;
+};
+
 class ContactSystem {
  public:
   // `laws` holds whole-contact strengths (halved internally for the two passes). Verifies
@@ -93,9 +102,9 @@ class ContactSystem {
   ContactSystem(const Model& model, const MaterialPairTable& laws, const ContactSettings& settings);
 
   // Evaluates all contacts at the model's current state and adds their forces to the node
-  // forces (fx, fy) and rigid forces (fx, fy, torque). Call once per step; `time_step` is the
-  // time since the previous evaluation (the rates of contact damping; 0: none).
-  ContactStepResult add_contact_forces(Model& model, double time_step = 0.0);
+  // forces (fx, fy) and rigid forces (fx, fy, torque). Call once per step, with the step's
+  // `evaluation` context.
+  ContactStepResult add_contact_forces(Model& model, const ContactEvaluation& evaluation = {});
 
   const std::vector<ContactRecord>& records() const { return records_; }
   const std::vector<ContactHistoryEntry>& histories() const { return histories_; }
@@ -149,12 +158,10 @@ class ContactSystem {
   std::vector<int> group_history_;       // per group: its entry in histories_, -1: none (scratch)
   // Contact damping and bond formation (contact_law.h): the initial tributary length L0 of
   // each contour point, each body's mass (filled at the first evaluation when a law is
-  // damped), and this evaluation's time step and whether it is the run's first.
+  // damped).
   std::vector<double> initial_tributary_;
   std::vector<double> body_mass_;
   bool damped_ = false;
-  bool first_evaluation_ = false;
-  double time_step_ = 0.0;
   void update_body_masses(const Model& model);
   double effective_mass(BodyId a, BodyId b) const;
 
@@ -169,7 +176,7 @@ class ContactSystem {
   void group_candidates(std::span<const ContactCandidate> candidates);
   // Narrow phase and law of one group (parallel over groups: writes only its own slots).
   void evaluate_group(const Model& model, std::span<const ContactCandidate> candidates,
-                      std::size_t group);
+                      std::size_t group, const ContactEvaluation& evaluation);
   ContactStepResult scatter_forces(Model& model);
 
   // The closest projection of a group's slave point on its master, and the periodic image

@@ -31,7 +31,7 @@ ContactRate contact_rate(const Model& model, const ContactRecord& r,
   SG_VERIFY(contour_velocity.size() == model.contour_point_count(),
             "contact rate: " << contour_velocity.size() << " contour velocities for "
                              << model.contour_point_count() << " contour points");
-  const Body& master = model.bodies[static_cast<std::size_t>(r.master_body)];
+  const Body& master = model.body(r.master_body);
   // The segment's end point, as the contact stage numbers it (contact_system.cpp).
   const int a = r.master_segment;
   const int b = master.contour_begin + (a - master.contour_begin + 1) % master.contour_count();

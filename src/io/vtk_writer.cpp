@@ -70,7 +70,7 @@ NodalFields evaluate_fields(const Model& model, double global_strain_rate,
   f.material_id.resize(n);
   for (std::size_t b = 0; b < model.bodies.size(); ++b) {
     const Body& body = model.bodies[b];
-    const MaterialParams& m = model.materials[static_cast<std::size_t>(body.material)];
+    const MaterialParams& m = model.material(body.material);
     for (int i = body.node_begin; i < body.node_end; ++i) {
       const auto k = static_cast<std::size_t>(i);
       const Vec2 x = node_position(model, i);

@@ -46,7 +46,7 @@ inline ChunkStress chunk_stress(const MaterialParams& material, const Chunk& c,
 template <int KU, int KF>
 BodyForceResult body_forces(const Model& model, const Body& body, const BodyArrays& a,
                             const Mat2& rotation) {
-  const MaterialParams& material = model.materials[static_cast<std::size_t>(body.material)];
+  const MaterialParams& material = model.material(body.material);
   const int nodes = body.node_count();
   double* state = node_buffer(KU, nodes, 0);
   double* force = node_buffer(KF, nodes, 1);
@@ -117,7 +117,7 @@ inline Tensor2B load_gradients(const Chunk& c, const Mat2* gradients, int gauss_
 inline void viscous_operator(const Model& model, const Body& body, const Mat2* gradients,
                              const Mat2& rotation, const double* x, const double* y, double* out_x,
                              double* out_y) {
-  const MaterialParams& material = model.materials[static_cast<std::size_t>(body.material)];
+  const MaterialParams& material = model.material(body.material);
   const int nodes = body.node_count();
   double* state = node_buffer(2, nodes, 0);
   double* out = node_buffer(2, nodes, 1);

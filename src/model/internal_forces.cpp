@@ -14,9 +14,9 @@ BodyForceResult add_body_internal_forces(const Model& model, BodyId body_id, con
                                          double* fx, double* fy, bool with_damping,
                                          double* viscous_fx, double* viscous_fy,
                                          const ForceKernel* kernel) {
-  const Body& body = model.bodies[static_cast<std::size_t>(body_id)];
-  const MaterialParams& material = model.materials[static_cast<std::size_t>(body.material)];
-  const bool damped = with_damping && material.damping > 0.0;
+  const Body& body = model.body(body_id);
+  const MaterialParams& material = model.material_of(body_id);
+  const bool damped = with_damping && model.is_damped(body_id);
   // The corotational damping model turns its strain rate with the body's mean rotation at u.
   const Mat2 rotation = damped && material.damping_model == DampingModel::corotational
                             ? body_rotation(model, body, ux, uy).matrix()
@@ -37,7 +37,7 @@ BodyForceResult add_body_internal_forces(const Model& model, BodyId body_id, con
 
 void body_deformation_gradients(const Model& model, BodyId body_id, const double* ux,
                                 const double* uy, std::vector<Mat2>& gradients) {
-  const Body& body = model.bodies[static_cast<std::size_t>(body_id)];
+  const Body& body = model.body(body_id);
   gradients.resize(static_cast<std::size_t>(body.gauss_end - body.gauss_begin));
   force_kernel().deformation_gradients(model, body, ux, uy, gradients.data());
 }
@@ -45,7 +45,7 @@ void body_deformation_gradients(const Model& model, BodyId body_id, const double
 void apply_viscous_operator(const Model& model, BodyId body_id, const std::vector<Mat2>& gradients,
                             const Mat2& rotation, const double* x, const double* y, double* out_x,
                             double* out_y) {
-  const Body& body = model.bodies[static_cast<std::size_t>(body_id)];
+  const Body& body = model.body(body_id);
   force_kernel().viscous_operator(model, body, gradients.data(), rotation, x, y, out_x, out_y);
 }
 
@@ -56,7 +56,7 @@ InternalForceResult add_internal_forces(Model& model) {
   force_kernel();  // chosen here, outside the threads: a bad SOFTGRAIN_SIMD throws to the caller
 #pragma omp parallel for schedule(dynamic, 8)
   for (int b = 0; b < body_count; ++b) {
-    const Body& body = model.bodies[static_cast<std::size_t>(b)];
+    const Body& body = model.body(b);
     if (body.kind != BodyKind::deformable) continue;
     const auto o = static_cast<std::size_t>(body.node_begin);
     per_body[static_cast<std::size_t>(b)] = add_body_internal_forces(
@@ -67,7 +67,7 @@ InternalForceResult add_internal_forces(Model& model) {
   for (int b = 0; b < body_count; ++b) {
     const BodyForceResult& r = per_body[static_cast<std::size_t>(b)];
     if (r.bad_gauss_point >= 0) {
-      const Body& body = model.bodies[static_cast<std::size_t>(b)];
+      const Body& body = model.body(b);
       SG_THROW("body '" << body.name << "': invalid deformation at Gauss point "
                         << r.bad_gauss_point - body.gauss_begin << " (det F = " << r.bad_jacobian
                         << "): the body is inverted or the step exploded");

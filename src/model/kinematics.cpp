@@ -13,7 +13,7 @@ void for_row(const ShapeRows& rows, std::size_t point, F&& visit) {
 }  // namespace
 
 Vec2 reference_mass_centroid(const Model& model, BodyId body) {
-  const Body& b = model.bodies[static_cast<std::size_t>(body)];
+  const Body& b = model.body(body);
   double m = 0.0;
   Vec2 c(0, 0);
   for (int i = b.node_begin; i < b.node_end; ++i) {
@@ -25,7 +25,7 @@ Vec2 reference_mass_centroid(const Model& model, BodyId body) {
 }
 
 void set_rigid_velocity(Model& model, BodyId body, const Vec2& velocity, double angular_velocity) {
-  const Body& b = model.bodies[static_cast<std::size_t>(body)];
+  const Body& b = model.body(body);
   // About the current (parameter) positions X + u: the field v + omega x (x - c) is linear
   // in the current position, hence reproduced exactly by MLS, whatever the deformation.
   double m = 0.0;
@@ -48,7 +48,7 @@ void set_rigid_velocity(Model& model, BodyId body, const Vec2& velocity, double 
 }
 
 void set_affine_deformation(Model& model, BodyId body, const Mat2& deformation_gradient) {
-  const Body& b = model.bodies[static_cast<std::size_t>(body)];
+  const Body& b = model.body(body);
   const Vec2 c = reference_mass_centroid(model, body);
   const Mat2 g = deformation_gradient - Mat2::Identity();
   for (int i = b.node_begin; i < b.node_end; ++i) {
@@ -65,7 +65,7 @@ int body_of_node(const Model& model, int node) {
   int lo = 0, hi = static_cast<int>(model.bodies.size()) - 1;
   while (lo < hi) {
     const int mid = (lo + hi + 1) / 2;
-    if (model.bodies[static_cast<std::size_t>(mid)].node_begin <= node)
+    if (model.body(mid).node_begin <= node)
       lo = mid;
     else
       hi = mid - 1;
@@ -87,7 +87,7 @@ Mat2 BodyRotation::matrix() const {
 }
 
 BodyRotation body_rotation(const Model& model, BodyId body) {
-  const Body& b = model.bodies[static_cast<std::size_t>(body)];
+  const Body& b = model.body(body);
   if (b.kind != BodyKind::deformable) return BodyRotation{};
   const auto first = static_cast<std::size_t>(b.node_begin);
   return body_rotation(model, b, model.nodes.ux.data() + first, model.nodes.uy.data() + first);
@@ -134,7 +134,7 @@ Vec2 contour_node_position(const Model& model, const Body& body, int node,
 
 Vec2 node_position(const Model& model, int node) {
   const int b = body_of_node(model, node);
-  const Body& body = model.bodies[static_cast<std::size_t>(b)];
+  const Body& body = model.body(b);
   if (hat_offset(model, body, node) == Vec2::Zero())
     return row_position(model, body.node_begin, node);
   return contour_node_position(model, body, node, body_rotation(model, b));
@@ -142,7 +142,7 @@ Vec2 node_position(const Model& model, int node) {
 
 Vec2 node_velocity(const Model& model, int node) {
   const int b = body_of_node(model, node);
-  const Body& body = model.bodies[static_cast<std::size_t>(b)];
+  const Body& body = model.body(b);
   const int base = body.node_begin;
   Vec2 v(0, 0);
   for_row(model.node_rows, static_cast<std::size_t>(node), [&](std::size_t k) {
@@ -209,17 +209,17 @@ Mat2 row_deformation_gradient(const Model& model, const ShapeRows& rows, std::si
 }  // namespace
 
 Mat2 node_deformation_gradient(const Model& model, int node) {
-  const int base = model.bodies[static_cast<std::size_t>(body_of_node(model, node))].node_begin;
+  const int base = model.body(body_of_node(model, node)).node_begin;
   return row_deformation_gradient(model, model.node_rows, static_cast<std::size_t>(node), base);
 }
 
 Mat2 gauss_deformation_gradient(const Model& model, BodyId body, int g) {
   return row_deformation_gradient(model, model.gauss_rows, static_cast<std::size_t>(g),
-                                  model.bodies[static_cast<std::size_t>(body)].node_begin);
+                                  model.body(body).node_begin);
 }
 
 Vec2 gauss_reference_position(const Model& model, BodyId body, int g) {
-  const int base = model.bodies[static_cast<std::size_t>(body)].node_begin;
+  const int base = model.body(body).node_begin;
   Vec2 x(0, 0);
   for_row(model.gauss_rows, static_cast<std::size_t>(g), [&](std::size_t k) {
     const auto j = static_cast<std::size_t>(base + model.gauss_rows.node[k]);
@@ -235,7 +235,7 @@ void compute_contour_positions(const Model& model, std::vector<Vec2>& positions,
   const int count = static_cast<int>(model.bodies.size());
 #pragma omp parallel for schedule(dynamic, 16)
   for (int b = 0; b < count; ++b) {
-    const Body& body = model.bodies[static_cast<std::size_t>(b)];
+    const Body& body = model.body(b);
     if (body.kind == BodyKind::rigid) {
       const auto r = static_cast<std::size_t>(body.rigid_index);
       const Mat2 rot = rotation(model.rigid.theta[r]);

@@ -14,6 +14,10 @@ void NodeState::resize(std::size_t n) {
   drive.resize(n, -1);
 }
 
+bool Model::is_damped(BodyId id) const {
+  return body(id).kind == BodyKind::deformable && material_of(id).damping > 0.0;
+}
+
 MaterialId Model::add_material(const MaterialDef& def) {
   for (const MaterialDef& m : material_defs)
     SG_VERIFY(m.name != def.name, "material '" << def.name << "' is defined twice");
@@ -57,7 +61,7 @@ BodyId Model::add_deformable_body(const std::string& name, const BodyDiscretizat
     contour_hat_offset.insert(contour_hat_offset.end(),
                               static_cast<std::size_t>(d.mesh.boundary_count), Vec2::Zero());
 
-  const double density = materials[static_cast<std::size_t>(material)].density;
+  const double density = this->material(material).density;
   nodes.resize(static_cast<std::size_t>(body.node_end));
   for (std::size_t i = 0; i < d.mesh.nodes.size(); ++i) {
     const std::size_t g = static_cast<std::size_t>(body.node_begin) + i;
@@ -105,7 +109,7 @@ BodyId Model::add_deformable_strip(const std::string& name,
             "body '" << name << "': strip period " << std::abs(strip.closing_shift_x)
                      << " differs from the periodic cell's " << x_max - x_min);
   const BodyId id = add_deformable_body(name, strip.body, material);
-  Body& body = bodies[static_cast<std::size_t>(id)];
+  Body& body = this->body(id);
   body.open_contour = true;
   body.closing_shift_x = strip.closing_shift_x;
   NodeDrive drive;
@@ -135,7 +139,7 @@ BodyId Model::add_rigid_body(const std::string& name, const Polygon& contour, Ma
   const double area = signed_area(contour);
   SG_VERIFY(area > 0.0, "body '" << name << "': contour must be counter-clockwise (signed area "
                                  << area << ")");
-  const double density = materials[static_cast<std::size_t>(material)].density;
+  const double density = this->material(material).density;
   Body body;
   body.reference_area = area;
   return append_rigid(body, name, contour, material, centroid(contour), density * area,
@@ -157,7 +161,7 @@ BodyId Model::add_rigid_strip(const std::string& name, const Polygon& surface, M
   Body body;
   body.open_contour = true;
   body.closing_shift_x = closing_shift_x;
-  body.reference_area = mass / materials[static_cast<std::size_t>(material)].density;
+  body.reference_area = mass / this->material(material).density;
   return append_rigid(body, name, surface, material, c, mass, inertia);
 }
 

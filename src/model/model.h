@@ -112,7 +112,7 @@ struct RigidDrive {
 //    nodes' common velocity (checkpointed with them). A pressure p on the back face of the
 //    upper strip is F = -p L on y.
 // The solver measures the reaction the drive applies and books its work
-// (solver/explicit_solver.h). Mode force is not supported on nodes.
+// (solver/stepper.h). Mode force is not supported on nodes.
 struct NodeDrive {
   BodyId body = -1;
   std::vector<int> nodes;  // global node indices, all in `body`, increasing
@@ -178,14 +178,8 @@ struct Model {
   std::vector<double> mean_gradient_x, mean_gradient_y;
   RigidState rigid;
   std::vector<NodeDrive> node_drives;
-  // The time integrator's treatment of the bulk damping ([time] integrator): explicit, or
-  // implicit per damped deformable body (IMEX, solver/implicit_viscosity.h), with the relative
-  // tolerance of its iterative solves. Read by the solver and by the stable step estimate
-  // (an implicit viscosity does not limit the step).
-  bool implicit_viscosity = false;
-  double implicit_viscosity_tolerance = 1e-5;          // default: docs/scenario.md imex_tolerance
-  double implicit_viscosity_refactor_threshold = 0.1;  // objective model (implicit_viscosity.h)
-  Vec2 gravity = Vec2::Zero();                         // acceleration (length / time^2)
+  // (The time integrator is no part of the model: solver/integrator_params.h.)
+  Vec2 gravity = Vec2::Zero();  // acceleration (length / time^2)
   // Periodic boundary in x over [x_min, x_max) when periodic_x is set.
   bool periodic_x = false;
   double x_min = 0.0, x_max = 0.0;
@@ -221,6 +215,19 @@ struct Model {
                               MaterialId material);
 
   std::size_t node_count() const { return nodes.size(); }
+
+  // Handles by id (ids index `bodies` and `materials`; no bounds check beyond the vector's).
+  const Body& body(BodyId id) const { return bodies[static_cast<std::size_t>(id)]; }
+  Body& body(BodyId id) { return bodies[static_cast<std::size_t>(id)]; }
+  const MaterialParams& material(MaterialId id) const {
+    return materials[static_cast<std::size_t>(id)];
+  }
+  const MaterialParams& material_of(BodyId id) const { return material(body(id).material); }
+  // The one definition of a damped body: a deformable body whose material has bulk
+  // (Kelvin-Voigt) damping, alpha > 0, whatever its damping model (material.h DampingModel).
+  // Rigid bodies carry no viscous force. Whether the integrator treats that viscosity
+  // implicitly is the integrator's choice (solver/implicit_viscosity.h).
+  bool is_damped(BodyId id) const;
 
  private:
   void check_new_body(const std::string& name, MaterialId material) const;

@@ -368,11 +368,12 @@ void measure_step(const ScenarioDef& scenario, Model& model, SampleReport& r) {
         ContactSystem(model, contact_law_table(scenario), contact_settings(scenario))
             .max_stiffness();
   if (scenario.mass_scaling_step > 0.0)
-    r.mass_scaling = describe(apply_mass_scaling(model, scenario.mass_scaling_step,
-                                                 scenario.time_step_safety, contact_stiffness),
-                              model);
-  const StableStep stable =
-      estimate_stable_time_step(model, scenario.time_step_safety, contact_stiffness);
+    r.mass_scaling =
+        describe(apply_mass_scaling(model, scenario.mass_scaling_step, scenario.time_step_safety,
+                                    contact_stiffness, integrator_params(scenario)),
+                 model);
+  const StableStep stable = estimate_stable_time_step(
+      model, scenario.time_step_safety, contact_stiffness, integrator_params(scenario));
   r.stable_step = stable.dt;
   r.damping_limited = stable.damping_limited;
   if (stable.limiting_body >= 0)

@@ -33,7 +33,7 @@ DrivenBodies::DrivenBodies(const Model& model)
 }
 
 Vec2 DrivenBodies::force(BodyId b) const {
-  const Body& body = model_.bodies[static_cast<std::size_t>(b)];
+  const Body& body = model_.body(b);
   if (body.kind == BodyKind::rigid) {
     const auto r = static_cast<std::size_t>(body.rigid_index);
     return Vec2(model_.rigid.fx[r], model_.rigid.fy[r]);
@@ -43,7 +43,7 @@ Vec2 DrivenBodies::force(BodyId b) const {
 }
 
 Vec2 DrivenBodies::position(BodyId b) const {
-  const Body& body = model_.bodies[static_cast<std::size_t>(b)];
+  const Body& body = model_.body(b);
   if (body.kind == BodyKind::rigid) {
     const auto r = static_cast<std::size_t>(body.rigid_index);
     return Vec2(model_.rigid.x[r], model_.rigid.y[r]);

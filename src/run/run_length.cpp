@@ -15,8 +15,8 @@ std::string zero_step_problem(const Simulation& sim) {
   why << "the stable step estimate is " << sim.first_dt;
   const StableStep& e = sim.first_estimate;
   if (e.limiting_body >= 0)
-    why << " (body '" << sim.model.bodies[static_cast<std::size_t>(e.limiting_body)].name
-        << "', highest frequency " << e.omega_max << ")";
+    why << " (body '" << sim.model.body(e.limiting_body).name << "', highest frequency "
+        << e.omega_max << ")";
   why << ": the stiffness-to-mass ratio (with the damping) is beyond what the arithmetic "
          "holds; check the materials' young, density and damping and the contact laws' "
          "normal_stiffness";

@@ -45,7 +45,7 @@ void write_model(std::ostream& out, const Simulation& sim) {
       << " shape-function entries\n";
   if (stable.limiting_body >= 0)
     out << "# stable step estimate: omega_max = " << stable.omega_max << " (body '"
-        << model.bodies[static_cast<std::size_t>(stable.limiting_body)].name << "'), "
+        << model.body(stable.limiting_body).name << "'), "
         << (stable.damping_limited ? "damping-limited" : "wave-speed-limited")
         << ", dt = " << stable.dt << "\n";
   out << sim.mass_scaling_note << sim.initial_state_note << "# first time step: " << sim.first_dt

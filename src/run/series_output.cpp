@@ -61,7 +61,7 @@ void SeriesOutput::write_header() {
   row_ << "time,step,dt,kinetic_energy,elastic_energy,external_work,damping_dissipation,"
           "contact_dissipation,servo_dissipation,energy_residual";
   for (BodyId b : driven_.bodies()) {
-    const std::string& name = model.bodies[static_cast<std::size_t>(b)].name;
+    const std::string& name = model.body(b).name;
     row_ << ',' << name << "_fx," << name << "_fy," << name << "_x," << name << "_y";
   }
   row_ << '\n';

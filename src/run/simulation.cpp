@@ -16,8 +16,9 @@ std::unique_ptr<ContactSystem> make_contacts(const ScenarioDef& s, Model& model)
 // so a resumed run rebuilds the same masses (and the checkpoint fingerprint checks them).
 std::string scale_masses(const ScenarioDef& s, Model& model, const ContactSystem* contacts) {
   if (s.mass_scaling_step <= 0.0) return "";
-  const MassScalingReport report = apply_mass_scaling(
-      model, s.mass_scaling_step, s.time_step_safety, contacts ? contacts->max_stiffness() : 0.0);
+  const MassScalingReport report =
+      apply_mass_scaling(model, s.mass_scaling_step, s.time_step_safety,
+                         contacts ? contacts->max_stiffness() : 0.0, integrator_params(s));
   return "# " + describe(report, model) + "\n";
 }
 
@@ -42,7 +43,7 @@ Simulation::Simulation(const ScenarioDef& scenario, std::ostream* progress)
       contacts(make_contacts(scenario, model)),
       mass_scaling_note(scale_masses(scenario, model, contacts.get())),
       initial_state_note(check_initial_state(scenario, model, contacts != nullptr, progress)),
-      solver(model, contacts.get()),
+      solver(model, contacts.get(), integrator_params(scenario)),
       controller(solver, contacts.get(), step_control_params(scenario, model, progress)),
       first_estimate(controller.last_estimate()),
       first_dt(controller.next_step()),

@@ -9,8 +9,8 @@
 
 #include "io/checkpoint.h"
 #include "scenario/scenario.h"
-#include "solver/explicit_solver.h"
 #include "solver/step_controller.h"
+#include "solver/stepper.h"
 
 namespace sg {
 
@@ -27,7 +27,7 @@ class Simulation {
   // Impossible periodic geometry is refused, suspicious initial states are warned about
   // (scenario/geometry_checks.h): the warnings, "# ...\n" lines for run.log.
   std::string initial_state_note;
-  ExplicitSolver solver;
+  Stepper solver;
   StepController controller;
   StableStep first_estimate;  // the controller's estimate of the built model
   double first_dt = 0.0;      // the first step

@@ -80,7 +80,8 @@ void SnapshotOutput::finish() {
     // on a copy of the state that is put back after (the evaluation moves the contact
     // histories and the rigid bodies' forces on; nothing else of the run changes).
     capture_state(sim.solver, sim.contacts.get(), final_state_);
-    sim.contacts->add_contact_forces(sim.model, sim.solver.state().previous_dt);
+    sim.contacts->add_contact_forces(
+        sim.model, {sim.solver.state().previous_dt, sim.solver.state().step == 0});
     add_to_collections(sim.solver.state().time);
     restore_state(final_state_, sim.solver, sim.contacts.get());
   } else {

@@ -38,7 +38,7 @@ Polygon grain_contour(const GrainSpec& g, double h) {
 
 void add_rigid_grain(Model& model, const GrainSpec& g, MaterialId material, double h) {
   const BodyId b = model.add_rigid_body(g.name, grain_contour(g, h), material);
-  const auto r = static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index);
+  const auto r = static_cast<std::size_t>(model.body(b).rigid_index);
   apply_drive(g.drive, model.rigid.drive[r], 0.0);
   const RigidDrive& d = model.rigid.drive[r];
   model.rigid.vx[r] = initial_velocity(d, 0, g.velocity.x());
@@ -49,7 +49,7 @@ void add_rigid_grain(Model& model, const GrainSpec& g, MaterialId material, doub
 void add_wall(Model& model, const WallDef& w, MaterialId material, double h) {
   const BodyId b =
       model.add_rigid_body(w.name, make_rectangle(w.lower_left, w.upper_right, h), material);
-  const auto r = static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index);
+  const auto r = static_cast<std::size_t>(model.body(b).rigid_index);
   RigidDrive& drive = model.rigid.drive[r];
   const double v[3] = {w.velocity.x(), w.velocity.y(), 0.0};
   for (int d = 0; d < 3; ++d) {
@@ -85,27 +85,23 @@ void add_strip(Model& model, const StripDef& strip, MaterialId material, double 
   const double pressure_force = above ? -period : period;
   if (strip.rigid) {
     const double thickness = std::abs(strip.back_y - strip.surface_y);
-    const double mass =
-        model.materials[static_cast<std::size_t>(material)].density * period * thickness;
+    const double mass = model.material(material).density * period * thickness;
     const double inertia = mass * (period * period + thickness * thickness) / 12.0;
     const BodyId b = model.add_rigid_strip(strip.name, surface, material, shift, mass, inertia);
-    RigidDrive& d =
-        model.rigid
-            .drive[static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index)];
+    RigidDrive& d = model.rigid.drive[static_cast<std::size_t>(model.body(b).rigid_index)];
     for (int k = 0; k < 3; ++k) {
       d.mode[k] = DriveMode::velocity;
       d.velocity[k] = PiecewiseLinear::constant(0.0);
     }
     apply_drive(strip.drive, d, pressure_force);
-    const auto r = static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index);
+    const auto r = static_cast<std::size_t>(model.body(b).rigid_index);
     model.rigid.vx[r] = initial_velocity(d, 0, 0.0);
     model.rigid.vy[r] = initial_velocity(d, 1, 0.0);
     return;
   }
   const BodyId b =
       model.add_deformable_strip(strip.name, surface, shift, strip.back_y, material, params);
-  NodeDrive& d = model.node_drives[static_cast<std::size_t>(
-      model.bodies[static_cast<std::size_t>(b)].node_drive)];
+  NodeDrive& d = model.node_drives[static_cast<std::size_t>(model.body(b).node_drive)];
   for (int k = 0; k < 2; ++k) {
     d.mode[k] = DriveMode::velocity;
     d.velocity[k] = PiecewiseLinear::constant(0.0);

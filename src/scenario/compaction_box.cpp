@@ -23,7 +23,7 @@ BodyId add_wall(Model& model, const std::string& name, const Vec2& lower_left,
                 const PiecewiseLinear& vy) {
   const BodyId b =
       model.add_rigid_body(name, make_rectangle(lower_left, upper_right, spacing), material);
-  const auto r = static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index);
+  const auto r = static_cast<std::size_t>(model.body(b).rigid_index);
   RigidDrive& drive = model.rigid.drive[r];
   for (int d = 0; d < 3; ++d) {
     drive.mode[d] = DriveMode::velocity;

@@ -219,8 +219,7 @@ std::vector<Overlap> find_overlaps(const Model& model, std::vector<BodyOutline> 
   auto test = [&](const BodyOutline& a, const BodyOutline& b, double shift) {
     if (a.y_hi < b.y_lo || b.y_hi < a.y_lo || a.x_hi < b.x_lo + shift || b.x_hi + shift < a.x_lo)
       return;
-    if (model.bodies[static_cast<std::size_t>(a.body)].kind == BodyKind::rigid &&
-        model.bodies[static_cast<std::size_t>(b.body)].kind == BodyKind::rigid)
+    if (model.body(a.body).kind == BodyKind::rigid && model.body(b.body).kind == BodyKind::rigid)
       return;
     const double depth = overlap_depth(a, b, shift);
     if (depth > 0.0) found.push_back({std::min(a.body, b.body), std::max(a.body, b.body), depth});
@@ -299,9 +298,9 @@ std::string check_initial_state(const ScenarioDef& scenario, const Model& model,
     const std::vector<Overlap> overlaps = find_overlaps(model, outlines);
     const std::size_t shown = std::min<std::size_t>(overlaps.size(), 5);
     for (std::size_t k = 0; k < shown; ++k)
-      warnings.push_back("bodies '" + model.bodies[static_cast<std::size_t>(overlaps[k].a)].name +
-                         "' and '" + model.bodies[static_cast<std::size_t>(overlaps[k].b)].name +
-                         "' overlap at t = 0 by " + number(overlaps[k].depth) +
+      warnings.push_back("bodies '" + model.body(overlaps[k].a).name + "' and '" +
+                         model.body(overlaps[k].b).name + "' overlap at t = 0 by " +
+                         number(overlaps[k].depth) +
                          " (the contact pushes them apart violently on the first step)");
     if (overlaps.size() > shown)
       warnings.push_back(std::to_string(overlaps.size()) +
@@ -330,8 +329,8 @@ std::string describe_step_collapse(const Model& model, const StableStep& now, do
   s << std::setprecision(4) << "the stable step fell to " << now.dt << ", below 1/"
     << kStepCollapseFactor << " of the first estimate " << first_dt;
   if (now.limiting_body >= 0)
-    s << ": body '" << model.bodies[static_cast<std::size_t>(now.limiting_body)].name
-      << "' sets it (highest frequency " << now.omega_max << ", "
+    s << ": body '" << model.body(now.limiting_body).name << "' sets it (highest frequency "
+      << now.omega_max << ", "
       << (now.damping_limited ? "its damping" : "its stiffened, strongly deformed elements")
       << "); the run will be slow: check its material, loading and initial state";
   return s.str();

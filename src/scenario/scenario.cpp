@@ -158,12 +158,14 @@ ContactSettings contact_settings(const ScenarioDef& scenario) {
   return settings;
 }
 
+IntegratorParams integrator_params(const ScenarioDef& scenario) {
+  return IntegratorParams{scenario.implicit_viscosity, scenario.imex_tolerance,
+                          scenario.imex_refactor_threshold};
+}
+
 Model build_model(const ScenarioDef& scenario) {
   Model model;
   model.gravity = scenario.gravity;
-  model.implicit_viscosity = scenario.implicit_viscosity;
-  model.implicit_viscosity_tolerance = scenario.imex_tolerance;
-  model.implicit_viscosity_refactor_threshold = scenario.imex_refactor_threshold;
   for (const MaterialDef& m : scenario.materials)
     model.add_material(m);
   auto material_id = [&](const std::string& name) {

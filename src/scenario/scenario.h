@@ -16,6 +16,7 @@
 #include "scenario/contact_law_def.h"
 #include "scenario/drive_def.h"
 #include "scenario/shear_cell.h"
+#include "solver/integrator_params.h"
 
 #include <optional>
 
@@ -116,6 +117,8 @@ struct ScenarioDef {
 // The material-pair table of a scenario (requires contact laws).
 MaterialPairTable contact_law_table(const ScenarioDef& scenario);
 ContactSettings contact_settings(const ScenarioDef& scenario);
+// The [time] integrator settings, for the stepper, the stable step and mass scaling.
+IntegratorParams integrator_params(const ScenarioDef& scenario);
 
 // Reads and validates a scenario file. Errors: "<file>:<line>: key '<key>': <expected>".
 ScenarioDef load_scenario(const std::filesystem::path& file);

@@ -142,8 +142,7 @@ void add_deformable_first_bodies(Model& model, const ShearCellDef& def,
     return PiecewiseLinear{{0.0, t0, t1}, {before, before, after}};
   };
   for (BodyId b : ids) {
-    NodeDrive& d = model.node_drives[static_cast<std::size_t>(
-        model.bodies[static_cast<std::size_t>(b)].node_drive)];
+    NodeDrive& d = model.node_drives[static_cast<std::size_t>(model.body(b).node_drive)];
     const bool is_top = b == ids[1];
     d.mode[0] = d.mode[1] = DriveMode::velocity;
     d.velocity[0] = ramp_between(0.0, (is_top ? 0.5 : -0.5) * def.velocity);
@@ -169,7 +168,7 @@ void add_rigid_first_bodies(Model& model, const ShearCellDef& def,
                             const FirstBodySurfaces& surfaces, double closing_speed,
                             const ServoLoad& servo, MaterialId first_body_material) {
   const double period = def.length;
-  const double density = model.materials[static_cast<std::size_t>(first_body_material)].density;
+  const double density = model.material(first_body_material).density;
   const double mass = density * period * def.first_body_thickness;
   const double inertia =
       mass * (period * period + def.first_body_thickness * def.first_body_thickness) / 12.0;
@@ -178,9 +177,7 @@ void add_rigid_first_bodies(Model& model, const ShearCellDef& def,
   const BodyId top_id =
       model.add_rigid_strip("top", surfaces.top, first_body_material, period, mass, inertia);
   for (BodyId b : {bottom_id, top_id}) {
-    RigidDrive& d =
-        model.rigid
-            .drive[static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index)];
+    RigidDrive& d = model.rigid.drive[static_cast<std::size_t>(model.body(b).rigid_index)];
     const double sign = b == top_id ? 1.0 : -1.0;
     for (int k = 0; k < 3; ++k)
       d.mode[k] = DriveMode::velocity;
@@ -287,7 +284,7 @@ ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId g
   const double closing_speed = (packed_height - info.gap) / def.compaction_time;
   ServoLoad servo;
   if (def.normal_load == NormalLoad::pressure) {
-    const double density = model.materials[static_cast<std::size_t>(first_body_material)].density;
+    const double density = model.material(first_body_material).density;
     const double mass = density * period * def.first_body_thickness;
     servo = servo_load(model, def, grain_material, packed_height, h, grain_size, mass, info);
   }

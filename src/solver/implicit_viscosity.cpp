@@ -11,9 +11,7 @@
 namespace sg {
 
 bool has_implicit_viscosity(const Model& model, BodyId b) {
-  const Body& body = model.bodies[static_cast<std::size_t>(b)];
-  return body.kind == BodyKind::deformable && body.node_drive < 0 &&
-         model.materials[static_cast<std::size_t>(body.material)].damping > 0.0;
+  return model.is_damped(b) && model.body(b).node_drive < 0;
 }
 
 namespace {
@@ -22,7 +20,7 @@ namespace {
 // point g) into the DOFs (2 i, 2 i + 1) x (2 j, 2 j + 1) of the entries' local nodes i, j.
 template <class Block>
 Eigen::SparseMatrix<double> assemble_gauss_blocks(const Model& model, BodyId b, Block&& block) {
-  const Body& body = model.bodies[static_cast<std::size_t>(b)];
+  const Body& body = model.body(b);
   const ShapeRows& rows = model.gauss_rows;
   std::vector<Eigen::Triplet<double>> entries;
   for (int g = body.gauss_begin; g < body.gauss_end; ++g) {
@@ -44,15 +42,10 @@ Eigen::SparseMatrix<double> assemble_gauss_blocks(const Model& model, BodyId b, 
   return k;
 }
 
-const MaterialParams& material_of(const Model& model, BodyId b) {
-  return model
-      .materials[static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].material)];
-}
-
 }  // namespace
 
 Eigen::SparseMatrix<double> assemble_damping_stiffness(const Model& model, BodyId b) {
-  const MaterialParams& m = material_of(model, b);
+  const MaterialParams& m = model.material_of(b);
   const ShapeRows& rows = model.gauss_rows;
   const double lambda = m.damping * m.lambda, mu = m.damping * m.mu;
   return assemble_gauss_blocks(model, b, [&](int g, auto a, auto c) {
@@ -75,8 +68,8 @@ namespace {
 template <class Emit>
 void objective_damping_blocks(const Model& model, BodyId b, const std::vector<Mat2>& gradients,
                               Emit&& emit) {
-  const Body& body = model.bodies[static_cast<std::size_t>(b)];
-  const MaterialParams& m = material_of(model, b);
+  const Body& body = model.body(b);
+  const MaterialParams& m = model.material_of(b);
   const ShapeRows& rows = model.gauss_rows;
   const double lambda = m.damping * m.lambda, mu = m.damping * m.mu;
   Eigen::Matrix3d d;  // alpha C0, plane strain, engineering shear strain
@@ -117,7 +110,7 @@ Eigen::SparseMatrix<double> assemble_objective_damping(const Model& model, BodyI
     entries.emplace_back(2 * i + 1, 2 * j, k(1, 0));
     entries.emplace_back(2 * i + 1, 2 * j + 1, k(1, 1));
   });
-  const int dofs = 2 * model.bodies[static_cast<std::size_t>(b)].node_count();
+  const int dofs = 2 * model.body(b).node_count();
   Eigen::SparseMatrix<double> c(dofs, dofs);
   c.setFromTriplets(entries.begin(), entries.end());  // duplicates summed, in entry order
   return c;
@@ -178,7 +171,7 @@ ImplicitViscosity::ImplicitViscosity(const Model& model, double tolerance,
     system_of_body_[b] = static_cast<int>(systems_.size());
     BodySystem& s = *systems_.emplace_back(std::make_unique<BodySystem>());
     s.body = id;
-    s.model = material_of(model, id).damping_model;
+    s.model = model.material_of(id).damping_model;
     // The objective model's C(F_ref) has the pattern of K0 (and is K0 until a first assembly).
     s.damping = assemble_damping_stiffness(model, id);
     const Body& body = model.bodies[b];
@@ -251,7 +244,7 @@ void ImplicitViscosity::apply_preconditioner(BodySystem& s, const Mat2& rotation
 
 void ImplicitViscosity::apply_operator(const Model& model, BodySystem& s, double h,
                                        const Eigen::VectorXd& x, Eigen::VectorXd& q) const {
-  const int n = model.bodies[static_cast<std::size_t>(s.body)].node_count();
+  const int n = model.body(s.body).node_count();
   s.work_x.resize(n);
   s.work_y.resize(n);
   Eigen::VectorXd& cx = s.work_x;
@@ -312,7 +305,7 @@ int ImplicitViscosity::conjugate_gradients(const Model& model, BodySystem& s, do
       rz = rz_next;
     }
   }
-  const Body& body = model.bodies[static_cast<std::size_t>(s.body)];
+  const Body& body = model.body(s.body);
   SG_VERIFY(s.r.norm() <= target,
             "body '" << body.name << "': the implicit viscous solve did not converge in "
                      << kMaxIterations << " iterations (relative residual "
@@ -326,7 +319,7 @@ void ImplicitViscosity::solve(const Model& model, BodyId b, double h, const doub
   const int index = system_of_body_[static_cast<std::size_t>(b)];
   SG_ASSERT(index >= 0, "body " << b << " has no implicit viscosity");
   BodySystem& s = *systems_[static_cast<std::size_t>(index)];
-  const Body& body = model.bodies[static_cast<std::size_t>(b)];
+  const Body& body = model.body(b);
   const int n = body.node_count();
   s.rhs.resize(2 * n);
   for (int i = 0; i < n; ++i) {

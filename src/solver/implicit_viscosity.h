@@ -35,7 +35,7 @@
 //
 // The force the update applied is F* = M dv / h (exactly what moved the velocities, whatever
 // the solve's residual), and the viscous force booked by the ledger is f_v* = f_v(v_n-1/2) +
-// F* - F_n = -C (v_n-1/2 + v_n+1/2) / 2: the ledger (solver/explicit_solver.h) stays closed.
+// F* - F_n = -C (v_n-1/2 + v_n+1/2) / 2: the ledger (solver/stepper.h) stays closed.
 //
 // Bodies with driven nodes (the back faces of deformable strips) keep the explicit viscous
 // update: their driven components would be constraints of the solve.
@@ -48,7 +48,8 @@
 
 namespace sg {
 
-// Which bodies the IMEX integrator treats implicitly: deformable, damped, without node drives.
+// Which bodies the IMEX integrator treats implicitly: the damped ones (Model::is_damped)
+// without node drives.
 bool has_implicit_viscosity(const Model& model, BodyId body);
 
 struct ViscousSolveStatistics {

@@ -19,7 +19,7 @@ double mass_scale_for_step(double omega, double alpha, double target_step) {
 }
 
 MassScalingReport apply_mass_scaling(Model& model, double target_step, double safety,
-                                     double contact_stiffness) {
+                                     double contact_stiffness, const IntegratorParams& integrator) {
   SG_VERIFY(target_step > 0.0,
             "mass scaling: the target step " << target_step << " must be positive");
   SG_VERIFY(safety > 0.0 && safety <= 1.0,
@@ -52,8 +52,8 @@ MassScalingReport apply_mass_scaling(Model& model, double target_step, double sa
       Body& body = model.bodies[b];
       // The controller's step is safety x the critical step: reach T / safety (with a hair of
       // margin so that round-off does not call for another pass).
-      const double s = mass_scale_for_step(omega[b], body_damping(model, static_cast<BodyId>(b)),
-                                           (1.0 + 1e-9) * target_step / safety);
+      const double alpha = body_damping(model, static_cast<BodyId>(b), integrator);
+      const double s = mass_scale_for_step(omega[b], alpha, (1.0 + 1e-9) * target_step / safety);
       if (s <= 1.0) continue;
       scaled = true;
       body.mass_scale *= s;
@@ -91,7 +91,7 @@ std::string describe(const MassScalingReport& report, const Model& model) {
       << report.scaled_bodies << " of " << model.bodies.size() << " bodies scaled";
   if (report.max_factor_body >= 0)
     out << ", largest factor " << report.max_factor << " (body '"
-        << model.bodies[static_cast<std::size_t>(report.max_factor_body)].name << "')";
+        << model.body(report.max_factor_body).name << "')";
   out << ", added mass " << 100.0 * report.added_fraction() << "% of " << report.physical_mass;
   return out.str();
 }

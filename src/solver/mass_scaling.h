@@ -21,6 +21,7 @@
 #include <string>
 
 #include "model/model.h"
+#include "solver/integrator_params.h"
 
 namespace sg {
 
@@ -44,8 +45,11 @@ double mass_scale_for_step(double omega, double alpha, double target_step);
 // which includes its contact partners' terms, is still below the target. Deterministic: the same
 // model gives the same factors whatever the thread count, so a resumed run rebuilds the same
 // masses. Throws sg::Error when target_step is not positive or a body was scaled already.
+// `integrator`: the run's (a body whose viscosity it treats implicitly is limited by its wave
+// speed only).
 MassScalingReport apply_mass_scaling(Model& model, double target_step, double safety,
-                                     double contact_stiffness);
+                                     double contact_stiffness,
+                                     const IntegratorParams& integrator = {});
 
 // One line for the run log and the terminal: target, bodies scaled, largest factor and where,
 // added mass in percent of the total.

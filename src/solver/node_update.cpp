@@ -1,10 +1,10 @@
-// The field nodes' phases of ExplicitSolver::step: the velocity update (free nodes, driven
-// nodes and load-driven carriers) and the position update. See explicit_solver.h.
+// The field nodes' phases of Stepper::step: the velocity update (free nodes, driven
+// nodes and load-driven carriers) and the position update. See stepper.h.
 #include <cmath>
 
 #include "core/error.h"
-#include "solver/explicit_solver.h"
 #include "solver/implicit_viscosity.h"
+#include "solver/stepper.h"
 
 namespace sg {
 
@@ -85,7 +85,7 @@ void advance_body_explicitly(const Model& model, NodeState& n, const Body& body,
 void advance_body_implicitly(const Model& model, NodeState& n, BodyId b, double h,
                              ImplicitViscosity& viscosity, double* increment_x, double* increment_y,
                              BodySums& sums) {
-  const Body& body = model.bodies[static_cast<std::size_t>(b)];
+  const Body& body = model.body(b);
   const double bgx = model.gravity.x() / body.mass_scale, bgy = model.gravity.y() / body.mass_scale;
   const auto o = static_cast<std::size_t>(body.node_begin);
   double* dvx = increment_x + o;
@@ -110,8 +110,8 @@ void advance_body_implicitly(const Model& model, NodeState& n, BodyId b, double 
 
 }  // namespace
 
-ExplicitSolver::NodeUpdate ExplicitSolver::update_node_velocities(const StepSizes& steps) {
-  const double h = steps.velocity;
+Stepper::NodeUpdate Stepper::update_node_velocities(const StepSizes& steps) {
+  const double h = steps.velocity_interval;
   NodeState& n = model_.nodes;
   const std::size_t drive_count = model_.node_drives.size();
   body_sums_.assign(kBodySums * model_.bodies.size() + kDriveSums * drive_count, 0.0);
@@ -135,7 +135,7 @@ ExplicitSolver::NodeUpdate ExplicitSolver::update_node_velocities(const StepSize
   const int body_count = static_cast<int>(model_.bodies.size());
 #pragma omp parallel for schedule(dynamic)
   for (int b = 0; b < body_count; ++b) {
-    const Body& body = model_.bodies[static_cast<std::size_t>(b)];
+    const Body& body = model_.body(b);
     BodySums sums;
     if (implicit_ && has_implicit_viscosity(model_, b))
       advance_body_implicitly(model_, n, b, h, *implicit_, increment_x_.data(), increment_y_.data(),
@@ -170,18 +170,17 @@ ExplicitSolver::NodeUpdate ExplicitSolver::update_node_velocities(const StepSize
   return update;
 }
 
-ExplicitSolver::ServoPower ExplicitSolver::advance_node_carriers(double h,
-                                                                 double* drive_data) const {
+ServoPower Stepper::advance_node_carriers(double h, double* drive_data) const {
   ServoPower power;
   const NodeState& n = model_.nodes;
   for (std::size_t d = 0; d < model_.node_drives.size(); ++d) {
     const NodeDrive& nd = model_.node_drives[d];
     for (std::size_t c = 0; c < 2; ++c) {
       SG_VERIFY(nd.mode[c] != DriveMode::force,
-                "body '" << model_.bodies[static_cast<std::size_t>(nd.body)].name
+                "body '" << model_.body(nd.body).name
                          << "': a node drive cannot impose a constant force (use load)");
       if (nd.mode[c] != DriveMode::load) continue;
-      SG_VERIFY(!nd.nodes.empty(), "body '" << model_.bodies[static_cast<std::size_t>(nd.body)].name
+      SG_VERIFY(!nd.nodes.empty(), "body '" << model_.body(nd.body).name
                                             << "': a load-driven node drive has no nodes");
       // The carrier: mass, momentum and received force of its nodes, summed in node order
       // (serial: the same bits on any number of threads).
@@ -210,13 +209,13 @@ ExplicitSolver::ServoPower ExplicitSolver::advance_node_carriers(double h,
   return power;
 }
 
-void ExplicitSolver::update_node_positions(double dt) {
+void Stepper::update_node_positions(double dt) {
   NodeState& n = model_.nodes;
   const int body_count = static_cast<int>(model_.bodies.size());
   body_probes_.assign(model_.bodies.size(), 0.0);
 #pragma omp parallel for schedule(static)
   for (int b = 0; b < body_count; ++b) {
-    const Body& body = model_.bodies[static_cast<std::size_t>(b)];
+    const Body& body = model_.body(b);
     // A probe that becomes NaN iff some updated value is not finite (0 * inf = NaN).
     double finite_probe = 0.0;
     for (int k = body.node_begin; k < body.node_end; ++k) {
@@ -230,7 +229,7 @@ void ExplicitSolver::update_node_positions(double dt) {
   if (model_.periodic_x) wrap_periodic_bodies();
 }
 
-void ExplicitSolver::finish_step(double dt) {
+void Stepper::finish_step(double dt) {
   state_.previous_dt = dt;
   state_.time += dt;
   ++state_.step;
@@ -240,7 +239,7 @@ void ExplicitSolver::finish_step(double dt) {
   if (finite_probe != 0.0 || !std::isfinite(finite_probe)) check_finite_velocities();
 }
 
-void ExplicitSolver::wrap_periodic_bodies() {
+void Stepper::wrap_periodic_bodies() {
   const double period = model_.x_max - model_.x_min;
   NodeState& n = model_.nodes;
   for (const Body& body : model_.bodies) {
@@ -275,7 +274,7 @@ void ExplicitSolver::wrap_periodic_bodies() {
   }
 }
 
-void ExplicitSolver::check_finite_velocities() const {
+void Stepper::check_finite_velocities() const {
   const NodeState& n = model_.nodes;
   for (const Body& body : model_.bodies)
     for (int i = body.node_begin; i < body.node_end; ++i) {

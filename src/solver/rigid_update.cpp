@@ -1,19 +1,19 @@
-// The rigid bodies' phase of ExplicitSolver::step: velocities and positions of the rigid
+// The rigid bodies' phase of Stepper::step: velocities and positions of the rigid
 // degrees of freedom, free, force-loaded, velocity-driven or servo-loaded. See
-// explicit_solver.h.
-#include "solver/explicit_solver.h"
+// stepper.h.
+#include "solver/stepper.h"
 
 namespace sg {
 
-ExplicitSolver::RigidUpdate ExplicitSolver::advance_rigid_bodies(const StepSizes& steps,
-                                                                 const ServoPower& carriers) {
+Stepper::RigidUpdate Stepper::advance_rigid_bodies(const StepSizes& steps,
+                                                   const ServoPower& carriers) {
   RigidState& r = model_.rigid;
   RigidUpdate update;
   // Servo-loaded DOFs: sums of F_n . v and (c v_n+1/2) . v over v_n-1/2 and v_n+1/2, the node
   // carriers' first.
   update.servo = carriers;
   ServoPower& servo = update.servo;
-  const double h = steps.velocity, dt = steps.next;
+  const double h = steps.velocity_interval, dt = steps.next;
   const double t_mid = state_.time + 0.5 * dt;  // velocities live at half steps
   for (std::size_t i = 0; i < r.size(); ++i) {
     const RigidDrive& drive = r.drive[i];

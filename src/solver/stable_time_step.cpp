@@ -18,7 +18,7 @@ double critical_time_step(double omega, double alpha) {
 }
 
 double estimate_max_frequency(const Model& model, BodyId body_id, int iterations) {
-  const Body& body = model.bodies[static_cast<std::size_t>(body_id)];
+  const Body& body = model.body(body_id);
   const auto n = static_cast<std::size_t>(body.node_count());
   const auto o = static_cast<std::size_t>(body.node_begin);
   const NodeState& s = model.nodes;
@@ -79,7 +79,7 @@ double estimate_max_frequency(const Model& model, BodyId body_id, int iterations
 }
 
 double wave_speed_frequency_bound(const Model& model, BodyId body_id) {
-  const Body& body = model.bodies[static_cast<std::size_t>(body_id)];
+  const Body& body = model.body(body_id);
   double h_min = std::numeric_limits<double>::infinity();
   // Nearest-neighbour distance from the triangulation edges (each node's edges).
   for (int t = body.triangle_begin; t < body.triangle_end; ++t) {
@@ -91,7 +91,7 @@ double wave_speed_frequency_bound(const Model& model, BodyId body_id) {
                                          model.nodes.ref_y[a] - model.nodes.ref_y[b]));
     }
   }
-  return 2.0 * p_wave_speed(model.materials[static_cast<std::size_t>(body.material)]) / h_min;
+  return 2.0 * p_wave_speed(model.material(body.material)) / h_min;
 }
 
 namespace {
@@ -194,7 +194,7 @@ std::vector<double> estimate_body_frequencies(const Model& model, double contact
   const std::size_t count = model.bodies.size();
   std::vector<double> body_omega(count, 0.0), contact_omega(count, 0.0);
   parallel_for(static_cast<int>(count), [&](int b) {
-    const Body& body = model.bodies[static_cast<std::size_t>(b)];
+    const Body& body = model.body(b);
     body_omega[static_cast<std::size_t>(b)] =
         body.kind == BodyKind::deformable ? estimate_max_frequency(model, b) : 0.0;
     contact_omega[static_cast<std::size_t>(b)] = contact_frequency(model, body, contact_stiffness);
@@ -237,17 +237,16 @@ std::vector<double> estimate_body_frequencies(const Model& model, double contact
   return omega;
 }
 
-double body_damping(const Model& model, BodyId body_id) {
-  const Body& body = model.bodies[static_cast<std::size_t>(body_id)];
+double body_damping(const Model& model, BodyId body_id, const IntegratorParams& integrator) {
+  if (!model.is_damped(body_id)) return 0.0;
   // An implicit viscosity (IMEX) is stable at any alpha for omega dt <= 2
   // (solver/implicit_viscosity.h): it does not limit the step.
-  if (model.implicit_viscosity && has_implicit_viscosity(model, body_id)) return 0.0;
-  return body.kind == BodyKind::deformable
-             ? model.materials[static_cast<std::size_t>(body.material)].damping
-             : 0.0;
+  if (integrator.implicit_viscosity && has_implicit_viscosity(model, body_id)) return 0.0;
+  return model.material_of(body_id).damping;
 }
 
-StableStep estimate_stable_time_step(const Model& model, double safety, double contact_stiffness) {
+StableStep estimate_stable_time_step(const Model& model, double safety, double contact_stiffness,
+                                     const IntegratorParams& integrator) {
   SG_VERIFY(safety > 0.0 && safety <= 1.0,
             "time step safety factor " << safety << " must be in (0, 1]");
   StableStep best;
@@ -257,7 +256,7 @@ StableStep estimate_stable_time_step(const Model& model, double safety, double c
   const std::vector<double> omega = estimate_body_frequencies(model, contact_stiffness);
   for (int b = 0; b < count; ++b) {
     if (omega[static_cast<std::size_t>(b)] <= 0.0) continue;
-    const double alpha = body_damping(model, b);
+    const double alpha = body_damping(model, b, integrator);
     const double dt = safety * critical_time_step(omega[static_cast<std::size_t>(b)], alpha);
     if (dt < best.dt) {
       best.dt = dt;

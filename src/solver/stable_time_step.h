@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "model/model.h"
+#include "solver/integrator_params.h"
 
 namespace sg {
 
@@ -33,8 +34,9 @@ double wave_speed_frequency_bound(const Model& model, BodyId body);
 std::vector<double> estimate_body_frequencies(const Model& model, double contact_stiffness);
 
 // The stiffness-proportional damping coefficient alpha that limits a body's explicit step: 0
-// for rigid bodies and for bodies whose viscosity the IMEX integrator treats implicitly.
-double body_damping(const Model& model, BodyId body);
+// for undamped bodies (Model::is_damped) and for bodies whose viscosity `integrator` treats
+// implicitly (IMEX).
+double body_damping(const Model& model, BodyId body, const IntegratorParams& integrator);
 
 struct StableStep {
   double dt = 0.0;               // safety * min over bodies of the critical step
@@ -50,7 +52,9 @@ struct StableStep {
 // two sides add in omega^2 (see estimate_body_frequencies), so each body adds the largest
 // contact frequency of any other body that is not fully velocity-driven. All terms combine in
 // omega^2 (springs in parallel): omega^2 = omega_body^2 + omega_contact^2 + omega_partner^2.
+// `integrator`: the step's (an implicit viscosity does not limit the step).
 StableStep estimate_stable_time_step(const Model& model, double safety,
-                                     double contact_stiffness = 0.0);
+                                     double contact_stiffness = 0.0,
+                                     const IntegratorParams& integrator = {});
 
 }  // namespace sg

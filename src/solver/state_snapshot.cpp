@@ -4,17 +4,16 @@
 
 namespace sg {
 
-// Friend of ExplicitSolver (declared there): the one place that reads and writes its private
+// Friend of Stepper (declared there): the one place that reads and writes its private
 // members for a snapshot. A member added to the solver that carries state from one step to
 // the next belongs here too.
 struct SolverSnapshotAccess {
-  static const Model& model(const ExplicitSolver& s) { return s.model_; }
-  static SolverPendingIncrements pending(const ExplicitSolver& s) { return s.pending_; }
-  static void set_pending(ExplicitSolver& s, const SolverPendingIncrements& p) { s.pending_ = p; }
+  static const Model& model(const Stepper& s) { return s.model_; }
+  static SolverPendingIncrements pending(const Stepper& s) { return s.pending_; }
+  static void set_pending(Stepper& s, const SolverPendingIncrements& p) { s.pending_ = p; }
 };
 
-void capture_state(const ExplicitSolver& solver, const ContactSystem* contacts,
-                   StateSnapshot& snapshot) {
+void capture_state(const Stepper& solver, const ContactSystem* contacts, StateSnapshot& snapshot) {
   const Model& model = SolverSnapshotAccess::model(solver);
   const NodeState& n = model.nodes;
   // Vector assignment reuses the destination's capacity: no allocation once grown.
@@ -44,13 +43,13 @@ void capture_state(const ExplicitSolver& solver, const ContactSystem* contacts,
   if (contacts) contacts->capture(snapshot.contacts);
 }
 
-StateSnapshot capture_state(const ExplicitSolver& solver, const ContactSystem* contacts) {
+StateSnapshot capture_state(const Stepper& solver, const ContactSystem* contacts) {
   StateSnapshot snapshot;
   capture_state(solver, contacts, snapshot);
   return snapshot;
 }
 
-void restore_state(const StateSnapshot& snapshot, ExplicitSolver& solver, ContactSystem* contacts) {
+void restore_state(const StateSnapshot& snapshot, Stepper& solver, ContactSystem* contacts) {
   Model& model = solver.model();
   NodeState& n = model.nodes;
   const std::size_t nodes = n.size(), rigid = model.rigid.size();

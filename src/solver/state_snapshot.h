@@ -3,13 +3,13 @@
 // (io/checkpoint.h) and what an adaptive step restores when it rejects a step.
 //
 // "Evolving" means everything a later step reads that an earlier step wrote:
-//   field nodes   u, v, and ref_x (ExplicitSolver::wrap_periodic_bodies moves a deformable
+//   field nodes   u, v, and ref_x (Stepper::wrap_periodic_bodies moves a deformable
 //                 body across the periodic seam by shifting its reference positions)
 //   rigid bodies  pose, velocities, and the forces received at the last evaluation
 //   node drives   the reactions at the last evaluation (a servo-loaded drive's carrier has
 //                 no state of its own: its velocity is its nodes' common one, saved above)
 //   solver        time, step count, energy ledger, and the work and dissipation of the last
-//                 step that the next step books (ExplicitSolver's pending increments)
+//                 step that the next step books (Stepper's pending increments)
 //   contacts      per-contact histories, the previous contour positions (slip increments),
 //                 the last evaluation's records (contact output), and the broad phase's
 //                 positions at its last build and candidate list (which decide the next
@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "contact/contact_system.h"
-#include "solver/explicit_solver.h"
+#include "solver/stepper.h"
 
 namespace sg {
 
@@ -46,13 +46,12 @@ struct StateSnapshot {
 
 // Copies the state of `solver` (its model) and of `contacts` (may be null) into `snapshot`,
 // reusing the snapshot's buffers.
-void capture_state(const ExplicitSolver& solver, const ContactSystem* contacts,
-                   StateSnapshot& snapshot);
-StateSnapshot capture_state(const ExplicitSolver& solver, const ContactSystem* contacts);
+void capture_state(const Stepper& solver, const ContactSystem* contacts, StateSnapshot& snapshot);
+StateSnapshot capture_state(const Stepper& solver, const ContactSystem* contacts);
 
 // Puts `snapshot` back into `solver`, its model and `contacts`. Throws sg::Error if the
 // snapshot does not fit (another number of nodes, rigid bodies or contour points, contacts
 // expected and not given or the reverse, another number of node drives).
-void restore_state(const StateSnapshot& snapshot, ExplicitSolver& solver, ContactSystem* contacts);
+void restore_state(const StateSnapshot& snapshot, Stepper& solver, ContactSystem* contacts);
 
 }  // namespace sg

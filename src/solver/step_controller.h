@@ -7,7 +7,7 @@
 //   1. takes safety x the critical step, re-estimated every `reestimate_interval` accepted
 //      steps (finite strain stiffens the grains; the estimate is for the current state);
 //   2. checks every step with an error estimate that costs no extra force evaluation: the
-//      energy ledger's residual increment. The ledger (explicit_solver.h) closes each
+//      energy ledger's residual increment. The ledger (stepper.h) closes each
 //      interval [t_n-1, t_n] with its own step: its residual changes by the interval's
 //      integration error alone, round-off for a linear system under any sequence of steps,
 //      a small oscillating amount otherwise (shear cell: median 1e-5, 99th percentile 4e-3
@@ -58,12 +58,13 @@
 // and retries, so failure is reported once, after max_halvings retries (core/error.h).
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "contact/contact_system.h"
-#include "solver/explicit_solver.h"
 #include "solver/stable_time_step.h"
 #include "solver/state_snapshot.h"
+#include "solver/stepper.h"
 
 namespace sg {
 
@@ -112,10 +113,12 @@ struct StepControllerState {
 class StepController {
  public:
   // Estimates the first step (unless fixed). `contacts` may be null.
-  StepController(ExplicitSolver& solver, ContactSystem* contacts, const StepControlParams& params);
+  StepController(Stepper& solver, ContactSystem* contacts, const StepControlParams& params);
 
-  // Takes one accepted step and returns its size. Throws sg::Error (with the solver's
-  // diagnosis: body, node, step) when a step still fails after max_halvings retries.
+  // Takes one accepted step and returns its size: holds a state, tries the step, accepts it or
+  // rolls back and retries. Throws sg::Error (with the stepper's diagnosis: body, node, step)
+  // when a step still fails after max_halvings retries. Its own time (held states, judging,
+  // rollbacks, estimates) goes to the step_control phase of the stepper's profile.
   double advance();
 
   double next_step() const { return state_.dt; }
@@ -128,7 +131,7 @@ class StepController {
   void seal() { held_ = 0; }
 
  private:
-  ExplicitSolver& solver_;
+  Stepper& solver_;
   ContactSystem* contacts_;
   StepControlParams params_;
   double contact_stiffness_ = 0.0;
@@ -141,6 +144,23 @@ class StepController {
   int held_ = 0, newest_ = 1;
   double first_stable_dt_ = 0.0;  // this session's first estimate (on_step_collapse)
   bool collapse_reported_ = false;
+
+  // Why a try was rejected; `failed`: the step threw (else the energy check refused it).
+  struct Rejection {
+    std::string why;
+    bool failed = false;
+  };
+  // The parts of advance(), in order.
+  double take_fixed_step();
+  // Holds the state before the step when due; true when it did.
+  bool hold_state();
+  // Takes the step and judges it; nothing when it is accepted.
+  std::optional<Rejection> try_step(double dt, PhaseTimer& timer);
+  void accept(double dt);
+  // Restores a held state and sets the smaller step to retry; throws when there is nothing to
+  // retry from or the retries are exhausted.
+  void roll_back(const Rejection& rejection, bool held_now, int rejections);
+  bool checks_energy() const { return params_.tolerance > 0.0; }
   void estimate();
 };
 

@@ -1,6 +1,7 @@
 #pragma once
-// Where the time of a run goes: wall seconds per phase of the step (ExplicitSolver::step) and
-// of the run loop around it (src/run/run.cpp), summed over the run. Timing only: nothing of the
+// Where the time of a run goes: wall seconds per phase of the step (Stepper::step), of the
+// step controller (StepController::advance) and of the run loop around them
+// (src/run/run_session.cpp), summed over the run. Timing only: nothing of the
 // physics reads it, and it is never checkpointed (a resumed run's profile covers that session).
 //
 // The phases are those of the step as it reads (docs/architecture.md "The step"); each is
@@ -21,7 +22,7 @@ enum class StepPhase : std::size_t {
   rigid_bodies,     // rigid degrees of freedom: velocities and positions
   positions,        // field-node displacements, periodic wrap, finite check
   ledger,           // the energy ledger
-  step_control,     // held states, rollbacks and critical-step estimates (the run loop)
+  step_control,     // held states, rollbacks and critical-step estimates (the controller)
   outputs,          // series rows, snapshots, checkpoints, progress (the run loop)
   count
 };
@@ -58,6 +59,9 @@ class PhaseTimer {
         std::chrono::duration<double>(now - last_).count();
     last_ = now;
   }
+  // Books the time since the previous stamp to no phase: it was timed elsewhere (the step's
+  // own phases, inside the step controller's).
+  void skip() { last_ = clock::now(); }
 
  private:
   using clock = std::chrono::steady_clock;

@@ -102,7 +102,7 @@ TEST(CohesiveLaw, BreakingReleasesNormalAndTangentialEnergy) {
 // to a fixed face is thrown away from it, fast enough to cross the bond's whole elastic range
 // in less than a step (v dt >> sigma_c / k_n, as in the shear cell), with a tangential
 // velocity that stays elastic. Symplectic Euler, kinetic energy time-centred
-// (1/2 m v_n-1/2 . v_n+1/2, explicit_solver.h): K + stored + dissipated must stay equal to
+// (1/2 m v_n-1/2 . v_n+1/2, stepper.h): K + stored + dissipated must stay equal to
 // its initial value to round-off at every step, across the break. With the released energy
 // 1/2 k g_trial^2 instead, the balance is off by 1/2 k g_trial (g_trial - g_prev) at the
 // break (here ~1e3 times the round-off bound below).

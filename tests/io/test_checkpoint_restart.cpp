@@ -222,7 +222,7 @@ TEST(CheckpointRestart, RunWithRejectedStepsResumesExactly) {
   // accepted, and grows back 50 steps later. Stopped at half the steps, after the rejection:
   // the resumed run starts from the checkpoint at t = 0.1 and repeats the rejection, the
   // retried step and the smaller steps after it identically. Measured with the
-  // variable-step update (solver/explicit_solver.h) and the contact-consistent contour rows
+  // variable-step update (solver/stepper.h) and the contact-consistent contour rows
   // (meshfree/contour_rows.h): one rejection at every tolerance from 0.0003 to 0.0008
   // (0.0003-0.0006 at t = 0.1058, 0.0007-0.0008 at t = 0.1105), three at 0.0001. Before the
   // variable-step update (v_n+1/2 = v_n-1/2 + dt_n+1/2 a_n), every tolerance up to 0.0006

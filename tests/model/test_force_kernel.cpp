@@ -187,11 +187,9 @@ TEST(ForceKernel, EveryVersionsViscousOperatorAndGradientsAreTheScalarOnes) {
       const NodeState& n = model.nodes;
       const Mat2 rotation = body_rotation(model, 0).matrix();
       for (BodyId b = 0; b < static_cast<BodyId>(model.bodies.size()); ++b) {
-        const auto o =
-            static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].node_begin);
-        const auto count =
-            static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].node_count());
-        const Body& body = model.bodies[static_cast<std::size_t>(b)];
+        const auto o = static_cast<std::size_t>(model.body(b).node_begin);
+        const auto count = static_cast<std::size_t>(model.body(b).node_count());
+        const Body& body = model.body(b);
         std::vector<Mat2> ours_f(static_cast<std::size_t>(body.gauss_end - body.gauss_begin)),
             reference_f;
         kernel->deformation_gradients(model, body, n.ux.data() + o, n.uy.data() + o, ours_f.data());

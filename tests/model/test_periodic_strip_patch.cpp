@@ -68,7 +68,7 @@ Mat2 impose(StripModel& s, const Mat2& g) {
 
 TEST(PeriodicStripPatch, AffinePeriodicFieldsGiveTheExactUniformGradient) {
   StripModel s = make_strip();
-  const Body& body = s.model.bodies[static_cast<std::size_t>(s.body)];
+  const Body& body = s.model.body(s.body);
   EXPECT_TRUE(body.open_contour);
   EXPECT_EQ(body.closing_shift_x, -kPeriod);
   EXPECT_EQ(body.boundary_count(), s.strip.body.mesh.boundary_count);
@@ -127,7 +127,7 @@ TEST(PeriodicStripPatch, AffinePeriodicFieldsGiveTheExactUniformGradient) {
 TEST(PeriodicStripPatch, UniformStressLeavesInteriorNodesInEquilibrium) {
   for (const int gauss_points : {3, 6}) {
     StripModel s = make_strip(gauss_points);
-    const Body& body = s.model.bodies[static_cast<std::size_t>(s.body)];
+    const Body& body = s.model.body(s.body);
     Mat2 g;
     g << 0.0, 0.05, 0.0, -0.02;  // shear and vertical compression, both periodic
     const Mat2 f = impose(s, g);

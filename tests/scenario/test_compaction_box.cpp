@@ -102,7 +102,7 @@ TEST(CompactionBox, FourNamedWallsThatNeverTouchAndGrainsInside) {
   ASSERT_EQ(model.bodies.size(), 16u);
   const char* walls[] = {"bottom", "left", "right", "lid"};
   for (int k = 0; k < 4; ++k) {
-    const Body& b = model.bodies[static_cast<std::size_t>(k)];
+    const Body& b = model.body(k);
     EXPECT_EQ(b.name, walls[k]);
     ASSERT_EQ(b.kind, BodyKind::rigid);
     const RigidDrive& d = model.rigid.drive[static_cast<std::size_t>(b.rigid_index)];

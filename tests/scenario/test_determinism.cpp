@@ -7,8 +7,8 @@
 #include <filesystem>
 
 #include "scenario/scenario.h"
-#include "solver/explicit_solver.h"
 #include "solver/stable_time_step.h"
+#include "solver/stepper.h"
 #include "test_locations.h"  // SOFTGRAIN_EXECUTABLE, SOFTGRAIN_SOURCE_DIR
 
 namespace sg {
@@ -28,7 +28,7 @@ Trajectory run_shear_cell(int threads) {
   ContactSystem contacts(model, contact_law_table(s), contact_settings(s));
   const double dt =
       estimate_stable_time_step(model, s.time_step_safety, contacts.max_stiffness()).dt;
-  ExplicitSolver solver(model, &contacts);
+  Stepper solver(model, &contacts);
   // 600 steps: about one time unit, enough for grains to touch, bond and wrap the seam.
   for (int k = 0; k < 600; ++k)
     solver.step(dt);

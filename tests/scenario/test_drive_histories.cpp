@@ -16,7 +16,7 @@
 #include "scenes/scenario_run.h"
 #include "scenes/series_text.h"
 #include "scenes/shear_cell_scenario.h"
-#include "solver/explicit_solver.h"
+#include "solver/stepper.h"
 
 namespace sg {
 namespace {
@@ -80,7 +80,7 @@ theta = { velocity = [[0.0, 1.0], [0.5, -3.0]] }
   EXPECT_EQ(m.rigid.vx[0], 0.0);  // a driven axis starts at its history's value
   EXPECT_EQ(m.rigid.vy[0], 4.0);
   const PiecewiseLinear vx = d.velocity[0], omega = d.velocity[2];
-  ExplicitSolver solver(m);
+  Stepper solver(m);
   const double dt = 1.0 / 64.0;
   int knots_checked = 0;
   for (int n = 1; n <= 64; ++n) {
@@ -117,7 +117,7 @@ y = { force = [[0.0, 0.0], [10.0, 20.0]] }
   Model m = build_model(load_scenario(file));
   ASSERT_EQ(m.rigid.drive[0].mode[1], DriveMode::load);
   const double mass = m.rigid.mass[0], x0 = m.rigid.x[0];
-  ExplicitSolver solver(m);
+  Stepper solver(m);
   const double dt = 1.0 / 64.0;
   for (int n = 0; n < 64; ++n)
     solver.step(dt);

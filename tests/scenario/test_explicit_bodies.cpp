@@ -96,7 +96,7 @@ material = "soft"
       {"grains_3", Vec2(8.0, 3.0), make_ellipse(Vec2(8.0, 3.0), 0.6, 0.3, 0.5, h), false,
        std::numbers::pi * 0.18}};
   for (const Expected& e : expected) {
-    const Body& b = m.bodies[static_cast<std::size_t>(body_named(m, e.name))];
+    const Body& b = m.body(body_named(m, e.name));
     ASSERT_EQ(b.kind == BodyKind::rigid, e.rigid) << e.name;
     const double area = signed_area(e.contour);
     if (e.rigid) {
@@ -115,7 +115,7 @@ material = "soft"
     EXPECT_NEAR(area, e.analytic_area, 0.03 * e.analytic_area) << e.name;
   }
   // The row without a material takes the table's.
-  EXPECT_EQ(m.bodies[static_cast<std::size_t>(body_named(m, "grains_2"))].material, 0);
+  EXPECT_EQ(m.body(body_named(m, "grains_2")).material, 0);
 }
 
 TEST(ExplicitBodies, ABadRowNamesTheFileLineAndColumn) {
@@ -170,15 +170,14 @@ points = [[2.0, 0.0], [3.0, 0.0], [2.0, 1.5]]
 material = "soft"
 )"));
   const Model m = build_model(s);
-  const Body& square = m.bodies[static_cast<std::size_t>(body_named(m, "square"))];
+  const Body& square = m.body(body_named(m, "square"));
   const auto r = static_cast<std::size_t>(square.rigid_index);
   EXPECT_NEAR(m.rigid.x[r], 0.5, 1e-12);
   EXPECT_NEAR(m.rigid.y[r], 0.5, 1e-12);
   EXPECT_NEAR(m.rigid.mass[r], 2.0, 1e-12);
   EXPECT_NEAR(m.rigid.inertia[r], 2.0 / 6.0, 1e-12);  // m (a^2 + b^2) / 12
   EXPECT_EQ(square.contour_count(), 40);              // edges subdivided at h = 0.1
-  const Polygon triangle =
-      reference_contour(m, m.bodies[static_cast<std::size_t>(body_named(m, "triangle"))]);
+  const Polygon triangle = reference_contour(m, m.body(body_named(m, "triangle")));
   EXPECT_NEAR(signed_area(triangle), 0.75, 1e-12);
   EXPECT_NEAR((centroid(triangle) - Vec2(7.0 / 3.0, 0.5)).norm(), 0.0, 1e-12);
 
@@ -241,7 +240,7 @@ wavelength = 10.0
 )"),
                              "back_y = -1.5", std::string("back_y = -1.5\nrigid = ") + rigid);
     const Model m = build_model(load_scenario(write("sines.toml", text)));
-    const Body& bottom = m.bodies[static_cast<std::size_t>(body_named(m, "bottom"))];
+    const Body& bottom = m.body(body_named(m, "bottom"));
     std::vector<Vec2> points;
     compute_contour_positions(m, points);
     ASSERT_EQ(bottom.contour_count(), 100);  // L / h
@@ -285,7 +284,7 @@ kind = "points"
 file = "top.csv"
 )";
   const Model m = build_model(load_scenario(write("csv.toml", strips_scenario(profile))));
-  const Body& top = m.bodies[static_cast<std::size_t>(body_named(m, "top"))];
+  const Body& top = m.body(body_named(m, "top"));
   ASSERT_EQ(top.kind, BodyKind::deformable);
   EXPECT_TRUE(top.open_contour);
   EXPECT_DOUBLE_EQ(top.closing_shift_x, 10.0);

@@ -19,8 +19,8 @@
 #include "scenario/geometry_checks.h"
 #include "scenario/scenario.h"
 #include "scenes/scenario_files.h"
-#include "solver/explicit_solver.h"
 #include "solver/step_controller.h"
+#include "solver/stepper.h"
 
 namespace sg {
 namespace {
@@ -142,7 +142,7 @@ TEST(Safety, CollapsingStableStepIsWarnedOnceNamingTheBody) {
   const ScenarioDef s =
       load_scenario(scenes::write_text_file(temp_root() / "crush.toml", two_discs("", 2.0)));
   Model model = build_model(s);
-  ExplicitSolver solver(model);
+  Stepper solver(model);
   StepControlParams params;
   params.reestimate_interval = 1;
   int calls = 0;

@@ -75,9 +75,7 @@ TEST(Scenario, ShearCellBuildsTwoDrivenFirstBodiesAndTheGrains) {
   EXPECT_EQ(model.bodies[0].name, "bottom");
   EXPECT_EQ(model.bodies[1].name, "top");
   for (int b : {0, 1}) {
-    const RigidDrive& d =
-        model.rigid
-            .drive[static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index)];
+    const RigidDrive& d = model.rigid.drive[static_cast<std::size_t>(model.body(b).rigid_index)];
     for (int k = 0; k < 3; ++k)
       EXPECT_EQ(d.mode[k], DriveMode::velocity);
     // After the compaction: +V/2 for the top, -V/2 for the bottom; no vertical motion.

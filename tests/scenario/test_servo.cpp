@@ -13,8 +13,8 @@
 #include "geometry/shapes.h"
 #include "scenario/scenario.h"
 #include "scenes/scenario_files.h"
-#include "solver/explicit_solver.h"
 #include "solver/stable_time_step.h"
+#include "solver/stepper.h"
 
 namespace sg {
 namespace {
@@ -97,7 +97,7 @@ TEST(Servo, FreeBodyReachesTerminalVelocityAndTheLedgerCloses) {
   steel.density = 2.0;
   const MaterialId m = model.add_material(steel);
   const BodyId b = model.add_rigid_body("block", make_rectangle(Vec2(0, 0), Vec2(2, 1), 0.25), m);
-  const auto r = static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(b)].rigid_index);
+  const auto r = static_cast<std::size_t>(model.body(b).rigid_index);
   const double mass = model.rigid.mass[r];  // 2 * 2 * 1
   ASSERT_NEAR(mass, 4.0, 1e-12);
   RigidDrive& d = model.rigid.drive[r];
@@ -105,7 +105,7 @@ TEST(Servo, FreeBodyReachesTerminalVelocityAndTheLedgerCloses) {
   d.mode[1] = DriveMode::load;
   d.load[1] = PiecewiseLinear{{0.0, 1.0}, {0.0, force}};  // ramped: a time-dependent load
   d.load_damping[1] = c;
-  ExplicitSolver solver(model);
+  Stepper solver(model);
   const double dt = 0.01;
   for (int k = 0; k < 3000; ++k)  // 30 time units: 15 relaxation times m / c
     solver.step(dt);
@@ -139,7 +139,7 @@ TEST(Servo, PressureLoadedShearCellCarriesThePressure) {
   ContactSystem contacts(model, contact_law_table(s), contact_settings(s));
   const double dt =
       estimate_stable_time_step(model, s.time_step_safety, contacts.max_stiffness()).dt;
-  ExplicitSolver solver(model, &contacts);
+  Stepper solver(model, &contacts);
   // Average over the second half, every step (the force received at step n is that of the
   // configuration at t_n).
   const double window_start = 0.5 * s.duration;

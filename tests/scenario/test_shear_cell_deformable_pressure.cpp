@@ -19,8 +19,8 @@
 #include "scenes/scenario_run.h"
 #include "scenes/series_text.h"
 #include "scenes/shear_cell_scenario.h"
-#include "solver/explicit_solver.h"
 #include "solver/stable_time_step.h"
+#include "solver/stepper.h"
 
 namespace sg {
 namespace {
@@ -93,7 +93,7 @@ TEST(DeformablePressure, TopStripCarriesThePressureAndTheLedgerCloses) {
   EXPECT_EQ(s.shear_cell->normal_load, NormalLoad::pressure);
   Model model = build_model(s);
   const BodyId top = body_named(model, "top");
-  const Body& top_body = model.bodies[static_cast<std::size_t>(top)];
+  const Body& top_body = model.body(top);
   ASSERT_GE(top_body.node_drive, 0);
   const NodeDrive& drive = model.node_drives[static_cast<std::size_t>(top_body.node_drive)];
   EXPECT_EQ(drive.mode[0], DriveMode::velocity);
@@ -101,7 +101,7 @@ TEST(DeformablePressure, TopStripCarriesThePressureAndTheLedgerCloses) {
   EXPECT_DOUBLE_EQ(drive.load[1](100.0), -kPressure * kLength);
   EXPECT_DOUBLE_EQ(drive.load_damping[1], 2.0);
   const NodeDrive& bottom_drive = model.node_drives[static_cast<std::size_t>(
-      model.bodies[static_cast<std::size_t>(body_named(model, "bottom"))].node_drive)];
+      model.body(body_named(model, "bottom")).node_drive)];
   EXPECT_EQ(bottom_drive.mode[1], DriveMode::velocity);  // held: only the top is loaded
 
   {
@@ -112,8 +112,8 @@ TEST(DeformablePressure, TopStripCarriesThePressureAndTheLedgerCloses) {
     text = scenes::replace_once(text, "servo_damping = 2.0\n", "");
     const Model by_default =
         build_model(load_scenario(scenes::write_text_file(dir / "default.toml", text)));
-    const NodeDrive& d = by_default.node_drives[static_cast<std::size_t>(
-        by_default.bodies[static_cast<std::size_t>(top)].node_drive)];
+    const NodeDrive& d =
+        by_default.node_drives[static_cast<std::size_t>(by_default.body(top).node_drive)];
     const double height = by_default.nodes.ref_y[static_cast<std::size_t>(d.nodes.front())] - 1.0;
     EXPECT_DOUBLE_EQ(d.load_damping[1],
                      servo_damping_estimate(10.0, 0.45, height, kLength, 2000.0, 0.25, 1.0, 8.0));
@@ -123,7 +123,7 @@ TEST(DeformablePressure, TopStripCarriesThePressureAndTheLedgerCloses) {
   ContactSystem contacts(model, contact_law_table(s), contact_settings(s));
   const double dt =
       estimate_stable_time_step(model, s.time_step_safety, contacts.max_stiffness()).dt;
-  ExplicitSolver solver(model, &contacts);
+  Stepper solver(model, &contacts);
   const double window_start = 0.5 * s.duration;
   double contact_sum = 0.0, cell_sum = 0.0;  // layer on the top; the load cell -R_y (no gravity)
   long samples = 0;

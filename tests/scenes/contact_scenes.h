@@ -31,8 +31,7 @@ inline MaterialPairTable single_law(const Model& model, const ContactLawParams& 
 
 // Fixes every degree of freedom of a rigid body (velocity 0).
 inline void fix_rigid(Model& model, BodyId body) {
-  RigidDrive& d = model.rigid.drive[static_cast<std::size_t>(
-      model.bodies[static_cast<std::size_t>(body)].rigid_index)];
+  RigidDrive& d = model.rigid.drive[static_cast<std::size_t>(model.body(body).rigid_index)];
   for (int k = 0; k < 3; ++k) {
     d.mode[k] = DriveMode::velocity;
     d.velocity[k] = PiecewiseLinear::constant(0.0);
@@ -40,8 +39,7 @@ inline void fix_rigid(Model& model, BodyId body) {
 }
 
 inline RigidDrive& drive_of(Model& model, BodyId body) {
-  return model.rigid
-      .drive[static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(body)].rigid_index)];
+  return model.rigid.drive[static_cast<std::size_t>(model.body(body).rigid_index)];
 }
 
 }  // namespace sg::scenes

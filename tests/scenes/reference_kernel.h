@@ -17,8 +17,8 @@ inline BodyForceResult reference_body_internal_forces(const Model& model, BodyId
                                                       double* fx, double* fy, bool with_damping,
                                                       double* viscous_fx = nullptr,
                                                       double* viscous_fy = nullptr) {
-  const Body& body = model.bodies[static_cast<std::size_t>(body_id)];
-  const MaterialParams& material = model.materials[static_cast<std::size_t>(body.material)];
+  const Body& body = model.body(body_id);
+  const MaterialParams& material = model.material(body.material);
   const bool damped = with_damping && material.damping > 0.0;
   const ShapeRows& rows = model.gauss_rows;
   const std::int32_t* offset = rows.offset.data();
@@ -111,7 +111,7 @@ inline BodyForceResult reference_body_internal_forces(const Model& model, BodyId
 
 inline void reference_deformation_gradients(const Model& model, BodyId body_id, const double* ux,
                                             const double* uy, std::vector<Mat2>& gradients) {
-  const Body& body = model.bodies[static_cast<std::size_t>(body_id)];
+  const Body& body = model.body(body_id);
   const ShapeRows& rows = model.gauss_rows;
   gradients.resize(static_cast<std::size_t>(body.gauss_end - body.gauss_begin));
   for (int g = body.gauss_begin; g < body.gauss_end; ++g) {
@@ -132,8 +132,8 @@ inline void reference_viscous_operator(const Model& model, BodyId body_id,
                                        const std::vector<Mat2>& gradients, const Mat2& rotation,
                                        const double* x, const double* y, double* out_x,
                                        double* out_y) {
-  const Body& body = model.bodies[static_cast<std::size_t>(body_id)];
-  const MaterialParams& material = model.materials[static_cast<std::size_t>(body.material)];
+  const Body& body = model.body(body_id);
+  const MaterialParams& material = model.material(body.material);
   const ShapeRows& rows = model.gauss_rows;
   std::fill(out_x, out_x + body.node_count(), 0.0);
   std::fill(out_y, out_y + body.node_count(), 0.0);

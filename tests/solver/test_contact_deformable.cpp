@@ -12,8 +12,8 @@
 #include "model/kinematics.h"
 #include "scenes/contact_scenes.h"
 #include "scenes/free_grains.h"
-#include "solver/explicit_solver.h"
 #include "solver/stable_time_step.h"
+#include "solver/stepper.h"
 
 namespace sg {
 namespace {
@@ -103,16 +103,14 @@ std::vector<HertzPoint> squeeze_disc(double h, const std::vector<double>& approa
   settings.cutoff = 0.5 * h;
   ContactSystem contacts(model, scenes::single_law(model, frictionless(kn)), settings);
   const double dt = estimate_stable_time_step(model, 0.8, kn).dt;
-  ExplicitSolver solver(model, &contacts);
+  Stepper solver(model, &contacts);
   // Quasi-static: the load pulse lasts ~5 periods of the lowest (ovalling) mode, 2 pi R / (2.5 c_s)
   // = 1.3; halving both durations changed the forces by < 0.2%.
   const double load_time = 6.0, hold_time = 3.0;
   std::vector<HertzPoint> out;
   double reached = 0.0, t0 = 0.0;
-  const std::size_t rt =
-      static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(top)].rigid_index);
-  const std::size_t rb =
-      static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(bottom)].rigid_index);
+  const std::size_t rt = static_cast<std::size_t>(model.body(top).rigid_index);
+  const std::size_t rb = static_cast<std::size_t>(model.body(bottom).rigid_index);
   const double y_top0 = model.rigid.y[rt], y_bottom0 = model.rigid.y[rb];
   for (double target : approaches) {
     // Triangular velocity pulse: each plate travels (target - reached) / 2 over load_time.
@@ -208,10 +206,10 @@ TEST(Impact, HeadOnDeformableDiscsConserveMomentumAndEnergy) {
   settings.cutoff = 0.5 * h;
   ContactSystem contacts(model, scenes::single_law(model, frictionless(kn)), settings);
   const double dt = estimate_stable_time_step(model, 0.5, kn).dt;
-  ExplicitSolver solver(model, &contacts);
+  Stepper solver(model, &contacts);
   const Vec2 p0 = linear_momentum(model);
   auto body_momentum = [&](BodyId body) {
-    const Body& bd = model.bodies[static_cast<std::size_t>(body)];
+    const Body& bd = model.body(body);
     double px = 0.0;
     for (int i = bd.node_begin; i < bd.node_end; ++i)
       px += model.nodes.mass[static_cast<std::size_t>(i)] *
@@ -276,8 +274,8 @@ double deepest_contour_point(double speed) {
   settings.cutoff = 0.5 * h;
   ContactSystem contacts(model, scenes::single_law(model, frictionless(kn)), settings);
   const double dt = estimate_stable_time_step(model, 1.0, kn).dt;
-  ExplicitSolver solver(model, &contacts);
-  const Body& body = model.bodies[static_cast<std::size_t>(disc)];
+  Stepper solver(model, &contacts);
+  const Body& body = model.body(disc);
   double deepest = -1.0;
   long steps = 0;
   for (; steps < 4000; ++steps) {
@@ -347,8 +345,7 @@ TEST(Mixed, RigidAndDeformableGrainsReceiveOppositeContactForces) {
     };
     evaluate();
     // Slide the rigid disc tangentially (and rotate it) by a small amount: stick forces.
-    const std::size_t r =
-        static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(hard)].rigid_index);
+    const std::size_t r = static_cast<std::size_t>(model.body(hard).rigid_index);
     model.rigid.x[r] += 0.004;
     model.rigid.y[r] -= 0.0015;
     model.rigid.theta[r] += 0.003;
@@ -356,7 +353,7 @@ TEST(Mixed, RigidAndDeformableGrainsReceiveOppositeContactForces) {
     ASSERT_FALSE(contacts.records().empty());
     Vec2 soft_force = Vec2::Zero();
     double soft_moment = 0.0, tangential = 0.0;
-    const Body& sb = model.bodies[static_cast<std::size_t>(soft)];
+    const Body& sb = model.body(soft);
     for (int i = sb.node_begin; i < sb.node_end; ++i) {
       const auto k = static_cast<std::size_t>(i);
       const Vec2 fi(model.nodes.fx[k], model.nodes.fy[k]);
@@ -441,15 +438,14 @@ TEST(CohesiveDeformable, BondedBlocksSeparateAtSigmaTimesLength) {
   settings.cutoff = 0.5 * h;
   ContactSystem contacts(model, laws, settings);
   const double dt = estimate_stable_time_step(model, 0.8, kn).dt;
-  ExplicitSolver solver(model, &contacts);
-  const std::size_t r =
-      static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(bottom)].rigid_index);
+  Stepper solver(model, &contacts);
+  const std::size_t r = static_cast<std::size_t>(model.body(bottom).rigid_index);
   // Records between the two blocks still carrying load (the interface bonds).
   auto interface_bonds = [&] {
     int n = 0;
     for (const ContactRecord& rec : contacts.records())
-      if (model.bodies[static_cast<std::size_t>(rec.slave_body)].kind == BodyKind::deformable &&
-          model.bodies[static_cast<std::size_t>(rec.master_body)].kind == BodyKind::deformable)
+      if (model.body(rec.slave_body).kind == BodyKind::deformable &&
+          model.body(rec.master_body).kind == BodyKind::deformable)
         ++n;
     return n;
   };

@@ -8,8 +8,8 @@
 
 #include "core/error.h"
 #include "scenes/contact_scenes.h"
-#include "solver/explicit_solver.h"
 #include "solver/stable_time_step.h"
+#include "solver/stepper.h"
 
 namespace sg {
 namespace {
@@ -59,7 +59,7 @@ TEST(Coulomb, BlockSlidesWhenTheTangentialForceExceedsMuN) {
     ContactSettings settings;
     settings.cutoff = 0.5 * h;
     ContactSystem contacts(s.model, scenes::single_law(s.model, coulomb(mu)), settings);
-    ExplicitSolver solver(s.model, &contacts);
+    Stepper solver(s.model, &contacts);
     const double dt = estimate_stable_time_step(s.model, 0.5, 1e4).dt;
     // Normal force first (one step), then a horizontal force ratio * mu * N on the block.
     solver.step(dt);
@@ -122,7 +122,7 @@ double peak_bond_force(int direction, double h, double strength) {
   ContactSettings settings;
   settings.cutoff = 0.5 * h;
   ContactSystem contacts(model, scenes::single_law(model, cohesive(strength)), settings);
-  ExplicitSolver solver(model, &contacts);
+  Stepper solver(model, &contacts);
   const double dt = 1e-3;
   double peak = 0.0;
   for (int k = 0; k < 2000; ++k) {
@@ -165,7 +165,7 @@ TEST(Periodicity, ContactAcrossTheSeamGivesTheSameForcesAsAwayFromIt) {
     ContactSettings settings;
     settings.cutoff = 0.05;
     ContactSystem contacts(model, scenes::single_law(model, coulomb(0.3)), settings);
-    ExplicitSolver solver(model, &contacts);
+    Stepper solver(model, &contacts);
     solver.step(1e-4);
     return std::vector<double>{model.rigid.fx[0], model.rigid.fy[0], model.rigid.torque[0],
                                model.rigid.fx[1], model.rigid.fy[1], model.rigid.torque[1]};
@@ -208,10 +208,9 @@ TEST(Periodicity, BlockOnAStripsClosingSegmentFeelsWhatItFeelsElsewhere) {
     ContactSettings settings;
     settings.cutoff = 0.05;
     ContactSystem contacts(model, scenes::single_law(model, coulomb(0.3)), settings);
-    ExplicitSolver solver(model, &contacts);
+    Stepper solver(model, &contacts);
     solver.step(1e-4);
-    const auto r =
-        static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(block)].rigid_index);
+    const auto r = static_cast<std::size_t>(model.body(block).rigid_index);
     double deepest = 0.0;
     for (const ContactRecord& c : contacts.records())
       deepest = std::min(deepest, c.gap);
@@ -233,7 +232,7 @@ TEST(BadInput, NonFinitePositionNamesBodyPointAndStep) {
   ContactSettings settings;
   settings.cutoff = 0.5 * h;
   ContactSystem contacts(s.model, scenes::single_law(s.model, coulomb(0.3)), settings);
-  ExplicitSolver solver(s.model, &contacts);
+  Stepper solver(s.model, &contacts);
   const double dt = estimate_stable_time_step(s.model, 0.5, 1e4).dt;
   solver.step(dt);
   solver.step(dt);

@@ -11,8 +11,8 @@
 #include "model/internal_forces.h"
 #include "scenes/contact_scenes.h"
 #include "scenes/free_grains.h"
-#include "solver/explicit_solver.h"
 #include "solver/stable_time_step.h"
+#include "solver/stepper.h"
 
 namespace sg {
 namespace {
@@ -133,7 +133,7 @@ TEST(ContactStableStep, EstimateBoundsTheBondedInterfacesFrequency) {
   BondedBlocks s;
   ContactSystem contacts(s.model, s.laws, settings());
   const StableStep estimate = estimate_stable_time_step(s.model, 1.0, s.kn);
-  ExplicitSolver solver(s.model, &contacts);
+  Stepper solver(s.model, &contacts);
   for (int k = 0; k < 3; ++k)
     solver.step(0.1 * estimate.dt);  // bonds formed, nothing moved yet
   const double omega = assembled_max_frequency(s.model, contacts);
@@ -157,7 +157,7 @@ TEST(ContactStableStep, BondedBlocksPulledSlowlyNeitherDissipateNorCreateEnergy)
   scenes::drive_of(s.model, s.top).velocity[1] = PiecewiseLinear{{0.0, 2.0}, {0.0, 0.01}};
   ContactSystem contacts(s.model, s.laws, settings());
   const double dt = estimate_stable_time_step(s.model, 0.8, s.kn).dt;
-  ExplicitSolver solver(s.model, &contacts);
+  Stepper solver(s.model, &contacts);
   std::size_t bonds = 0;
   while (solver.state().time < 2.5) {
     solver.step(dt);
@@ -166,8 +166,7 @@ TEST(ContactStableStep, BondedBlocksPulledSlowlyNeitherDissipateNorCreateEnergy)
       if (r.active) ++bonds;
   }
   const EnergyLedger& e = solver.state().energy;
-  const std::size_t r =
-      static_cast<std::size_t>(s.model.bodies[static_cast<std::size_t>(s.bottom)].rigid_index);
+  const std::size_t r = static_cast<std::size_t>(s.model.body(s.bottom).rigid_index);
   std::printf(
       "pulled to t = %.3f: force %.4f, bonds %zu, dissipated %.3g, residual %.3g, "
       "external work %.3g\n",

@@ -8,8 +8,8 @@
 
 #include "model/kinematics.h"
 #include "scenes/contact_scenes.h"
-#include "solver/explicit_solver.h"
 #include "solver/stable_time_step.h"
+#include "solver/stepper.h"
 
 namespace sg {
 namespace {
@@ -37,8 +37,7 @@ BodyId add_flat_strip(Model& model, MaterialId material, double drift) {
 }
 
 void hold_back_face(Model& model, BodyId strip) {
-  NodeDrive& d = model.node_drives[static_cast<std::size_t>(
-      model.bodies[static_cast<std::size_t>(strip)].node_drive)];
+  NodeDrive& d = model.node_drives[static_cast<std::size_t>(model.body(strip).node_drive)];
   for (int c = 0; c < 2; ++c) {
     d.mode[c] = DriveMode::velocity;
     d.velocity[c] = PiecewiseLinear::constant(0.0);
@@ -72,16 +71,15 @@ TEST(DeformableStrip, BlockOnTheSeamFeelsWhatItFeelsElsewhere) {
     ContactSettings settings;
     settings.cutoff = 0.05;
     ContactSystem contacts(model, scenes::single_law(model, law), settings);
-    ExplicitSolver solver(model, &contacts);
+    Stepper solver(model, &contacts);
     const double dt = estimate_stable_time_step(model, 0.5, law.normal_stiffness).dt;
     for (int k = 0; k < 200; ++k)
       solver.step(dt);
-    const auto r =
-        static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(block)].rigid_index);
+    const auto r = static_cast<std::size_t>(model.body(block).rigid_index);
     double deepest = 0.0;
     for (const ContactRecord& c : contacts.records())
       deepest = std::min(deepest, c.gap);
-    const Body& body = model.bodies[static_cast<std::size_t>(strip)];
+    const Body& body = model.body(strip);
     double deepest_node = 0.0;  // how far the strip's surface moved down under the block
     for (int i = body.node_begin; i < body.boundary_end; ++i)
       deepest_node = std::min(deepest_node, node_position(model, i).y());
@@ -110,10 +108,10 @@ TEST(DeformableStrip, DrivenBackFaceBooksItsWorkAndTheLedgerCloses) {
   const MaterialId soft = model.add_material(strip_material(0.01));
   const BodyId strip = add_flat_strip(model, soft, 0.0);
   hold_back_face(model, strip);
-  const Body& body = model.bodies[static_cast<std::size_t>(strip)];
+  const Body& body = model.body(strip);
   NodeDrive& d = model.node_drives[static_cast<std::size_t>(body.node_drive)];
   d.velocity[0] = PiecewiseLinear{{0.0, 0.2}, {0.0, 0.5}};
-  ExplicitSolver solver(model);
+  Stepper solver(model);
   const double dt = estimate_stable_time_step(model, 0.5).dt;
   const int steps = static_cast<int>(std::ceil(0.6 / dt));
   const double weight = -total_mass(model);  // M g_y, g = (0, -1)

@@ -10,8 +10,8 @@
 #include "core/error.h"
 #include "model/kinematics.h"
 #include "scenes/free_grains.h"
-#include "solver/explicit_solver.h"
 #include "solver/stable_time_step.h"
+#include "solver/stepper.h"
 
 namespace sg {
 namespace {
@@ -36,7 +36,7 @@ double undamped_energy_drift(double fraction) {
   stretch(0, 0) = 1.05;  // 5% uniaxial stretch
   set_affine_deformation(model, 0, stretch);
   const StableStep stable = estimate_stable_time_step(model, fraction);
-  ExplicitSolver solver(model);
+  Stepper solver(model);
   const double duration = 50.0 * ovalling_period(model.materials[0], radius);
   const long steps = std::lround(duration / stable.dt);
   double initial = 0.0, worst = 0.0;
@@ -74,7 +74,7 @@ TEST(Energy, DampedGrainLosesEnergyMonotonicallyAndTheLedgerAccountsForIt) {
   stretch(0, 0) = 1.05;
   set_affine_deformation(model, 0, stretch);
   const StableStep stable = estimate_stable_time_step(model, 0.8);
-  ExplicitSolver solver(model);
+  Stepper solver(model);
   const long steps = std::lround(10.0 * ovalling_period(model.materials[0], radius) / stable.dt);
   double initial = 0.0, previous = 0.0;
   int increases = 0;
@@ -110,7 +110,7 @@ TEST(Momentum, FreeSpinningDeformedGrainConservesLinearAndAngularMomentum) {
   const Vec2 p0 = linear_momentum(model);
   const double l0 = angular_momentum(model);
   const StableStep stable = estimate_stable_time_step(model, 0.8);
-  ExplicitSolver solver(model);
+  Stepper solver(model);
   for (int s = 0; s < 2000; ++s)
     solver.step(stable.dt);
   // Round-off: ~1e-16 per operation, accumulated over 2000 steps and ~300 nodes.
@@ -128,7 +128,7 @@ TEST(ObjectiveDamping, SpinningUndeformedGrainKeepsItsKineticEnergy) {
   set_rigid_velocity(model, 0, Vec2(0, 0), omega);
   const double k0 = kinetic_energy(model);
   const StableStep stable = estimate_stable_time_step(model, 0.8);
-  ExplicitSolver solver(model);
+  Stepper solver(model);
   const long steps = std::lround(2.0 * 2.0 * std::numbers::pi / omega / stable.dt);
   for (long s = 0; s < steps; ++s)
     solver.step(stable.dt);
@@ -162,7 +162,7 @@ TEST(StableStep, EstimateIsBelowTheWaveSpeedBoundAndSeparatesStableFromUnstable)
         return u;
       };
       const double initial = largest();
-      ExplicitSolver solver(m);
+      Stepper solver(m);
       try {
         for (int s = 0; s < 3000; ++s)
           solver.step(factor * dt_critical);
@@ -206,7 +206,7 @@ TEST(Threads, OneAndTwoThreadsGiveBitwiseIdenticalTrajectories) {
     }
     model.gravity = Vec2(0, -1);
     const StableStep stable = estimate_stable_time_step(model, 0.8);
-    ExplicitSolver solver(model);
+    Stepper solver(model);
     for (int s = 0; s < 300; ++s)
       solver.step(stable.dt);
     return std::make_pair(model.nodes, solver.state().energy);
@@ -224,7 +224,7 @@ TEST(Diagnosis, ExplodingStepNamesBodyNodeAndStep) {
   set_rigid_velocity(model, 0, Vec2(0, 0), 1.0);
   for (std::size_t i = 0; i < model.node_count(); ++i)
     model.nodes.ux[i] = 0.01 * std::sin(1.7 * static_cast<double>(i));
-  ExplicitSolver solver(model);
+  Stepper solver(model);
   try {
     for (int s = 0; s < 1000; ++s)
       solver.step(1.0);  // far above the stable step

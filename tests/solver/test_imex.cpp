@@ -15,9 +15,9 @@
 #include "model/kinematics.h"
 #include "scenes/finite_difference_stiffness.h"
 #include "scenes/free_grains.h"
-#include "solver/explicit_solver.h"
 #include "solver/implicit_viscosity.h"
 #include "solver/stable_time_step.h"
+#include "solver/stepper.h"
 
 namespace sg {
 namespace {
@@ -170,9 +170,10 @@ double modal_coordinate(const Model& model, const Mode& mode) {
 
 // Integrates the released mode and fits ln(peak q) against t: the decay rate sigma
 // (q ~ exp(-sigma t) cos(omega_d t); sigma = xi omega).
-double measured_decay_rate(Model& model, const Mode& mode, double dt, double duration) {
+double measured_decay_rate(Model& model, const Mode& mode, double dt, double duration,
+                           const IntegratorParams& integrator) {
   set_displacement(model, 1e-4 * mode.shape / mode.shape.cwiseAbs().maxCoeff());
-  ExplicitSolver solver(model);
+  Stepper solver(model, nullptr, integrator);
   std::vector<double> q;
   const long steps = std::lround(duration / dt);
   for (long s = 0; s <= steps; ++s) {
@@ -205,14 +206,15 @@ TEST(Imex, KelvinVoigtDecayWithBothIntegratorsImexAtTwentyTimesTheExplicitLimit)
   const Mode mode = lowest_mode(model);
   const double xi = 0.5 * alpha * mode.omega;
   const double dt_explicit = estimate_stable_time_step(model, 1.0).dt;
-  model.implicit_viscosity = true;
-  const double dt_undamped = estimate_stable_time_step(model, 1.0).dt;
+  const double dt_undamped =
+      estimate_stable_time_step(model, 1.0, 0.0, IntegratorParams::imex()).dt;
   const double dt_imex = 20.0 * dt_explicit;
   std::printf("lowest mode omega %.4f, xi %.4f; explicit damped limit %.3e, undamped %.3e\n",
               mode.omega, xi, dt_explicit, dt_undamped);
   ASSERT_LT(dt_imex, 0.9 * dt_undamped) << "the scene must put 20x the damped limit in range";
   const double period = 2.0 * std::numbers::pi / mode.omega;
-  const double sigma = measured_decay_rate(model, mode, dt_imex, 5.0 * period);
+  const double sigma =
+      measured_decay_rate(model, mode, dt_imex, 5.0 * period, IntegratorParams::imex());
   std::printf("decay rate: analytic xi omega %.5f, imex at dt %.3e: %.5f (%+.2f%%)\n",
               xi * mode.omega, dt_imex, sigma, 100 * (sigma / (xi * mode.omega) - 1));
   EXPECT_NEAR(sigma, xi * mode.omega, 0.02 * xi * mode.omega);
@@ -226,7 +228,8 @@ TEST(Imex, KelvinVoigtDecayWithBothIntegratorsImexAtTwentyTimesTheExplicitLimit)
   const double coarse_rate = 0.5 * coarse_alpha * coarse_mode.omega * coarse_mode.omega;
   const double dt_coarse = 0.9 * estimate_stable_time_step(coarse, 1.0).dt;
   const double sigma_explicit = measured_decay_rate(
-      coarse, coarse_mode, dt_coarse, 4.5 * 2.0 * std::numbers::pi / coarse_mode.omega);
+      coarse, coarse_mode, dt_coarse, 4.5 * 2.0 * std::numbers::pi / coarse_mode.omega,
+      IntegratorParams::explicit_integrator());
   std::printf("explicit (node spacing 0.2, dt %.3e): analytic %.5f, measured %.5f (%+.2f%%)\n",
               dt_coarse, coarse_rate, sigma_explicit, 100 * (sigma_explicit / coarse_rate - 1));
   EXPECT_NEAR(sigma_explicit, coarse_rate, 0.02 * coarse_rate);
@@ -238,11 +241,11 @@ TEST(Imex, KelvinVoigtDecayWithBothIntegratorsImexAtTwentyTimesTheExplicitLimit)
 // model's braking.)
 double spin_dissipation(DampingModel damping_model, bool imex) {
   Model model = damped_disc(0.02, damping_model, 0.3, 0.2, 100.0);
-  model.implicit_viscosity = imex;
+  const IntegratorParams integrator{imex};
   const double omega = 0.5;
   set_rigid_velocity(model, 0, Vec2::Zero(), omega);
-  ExplicitSolver solver(model);
-  const double dt = estimate_stable_time_step(model, 0.8).dt;
+  Stepper solver(model, nullptr, integrator);
+  const double dt = estimate_stable_time_step(model, 0.8, 0.0, integrator).dt;
   const long steps = std::lround(std::numbers::pi / omega / dt);
   for (long s = 0; s < steps; ++s)
     solver.step(dt);
@@ -271,13 +274,12 @@ TEST(Imex, ARigidSpinStepIsUndampedByTheObjectiveForms) {
     for (const DampingModel dm :
          {DampingModel::objective, DampingModel::corotational, DampingModel::reference_stiffness}) {
       Model model = damped_disc(0.3, dm);
-      model.implicit_viscosity = true;
       Mat2 q;
       q << std::cos(theta), -std::sin(theta), std::sin(theta), std::cos(theta);
       set_affine_deformation(model, 0, q);
       set_rigid_velocity(model, 0, Vec2::Zero(), 0.8);
       const std::vector<double> vx = model.nodes.vx, vy = model.nodes.vy;
-      ExplicitSolver solver(model);
+      Stepper solver(model, nullptr, IntegratorParams::imex());
       solver.step(1e-2);
       double change = 0.0, speed = 0.0;
       for (std::size_t i = 0; i < vx.size(); ++i) {
@@ -335,13 +337,13 @@ TEST(Imex, CorotationalEqualsObjectiveForARotatedGrainAndDiffersAtFiniteStrain) 
 TEST(Imex, StableAtAlphaHalfWhereTheExplicitStepBlowsUp) {
   const double alpha = 0.5;
   Model model = damped_disc(alpha, DampingModel::objective, 0.495, 0.2);
-  model.implicit_viscosity = true;
-  const double dt = 0.9 * estimate_stable_time_step(model, 1.0).dt;  // undamped limit
+  const IntegratorParams imex = IntegratorParams::imex();
+  const double dt = 0.9 * estimate_stable_time_step(model, 1.0, 0.0, imex).dt;  // undamped limit
   Mat2 stretch;
   stretch << 1.01, 0.0, 0.0, 0.99;
   set_affine_deformation(model, 0, stretch);
   {
-    ExplicitSolver solver(model);
+    Stepper solver(model, nullptr, imex);
     solver.step(dt);
     const double start = solver.state().energy.kinetic + solver.state().energy.elastic;
     double largest = start;
@@ -357,7 +359,7 @@ TEST(Imex, StableAtAlphaHalfWhereTheExplicitStepBlowsUp) {
   }
   Model explicit_model = damped_disc(alpha, DampingModel::objective, 0.495, 0.2);
   set_affine_deformation(explicit_model, 0, stretch);
-  ExplicitSolver solver(explicit_model);
+  Stepper solver(explicit_model);
   try {
     for (int s = 0; s < 1000; ++s)
       solver.step(dt);
@@ -374,12 +376,12 @@ TEST(Imex, LedgerClosesOnANearLinearGrain) {
   for (const DampingModel dm :
        {DampingModel::objective, DampingModel::corotational, DampingModel::reference_stiffness}) {
     Model model = damped_disc(0.05, dm, 0.45, 0.2);
-    model.implicit_viscosity = true;
+    const IntegratorParams imex = IntegratorParams::imex();
     Mat2 stretch;
     stretch << 1.0 + 1e-4, 0.0, 0.0, 1.0 - 1e-4;
     set_affine_deformation(model, 0, stretch);
-    ExplicitSolver solver(model);
-    const double dt = 0.8 * estimate_stable_time_step(model, 1.0).dt;
+    Stepper solver(model, nullptr, imex);
+    const double dt = 0.8 * estimate_stable_time_step(model, 1.0, 0.0, imex).dt;
     double largest = 0.0;
     for (int s = 0; s < 2000; ++s) {
       solver.step(dt);
@@ -396,7 +398,6 @@ TEST(Imex, LedgerClosesOnANearLinearGrain) {
 // u at time T of a damped vibration released from a small stretch, integrated with dt.
 Eigen::VectorXd damped_vibration(bool imex, double dt, double duration) {
   Model model = damped_disc(0.01, DampingModel::objective, 0.45, 0.25);
-  model.implicit_viscosity = imex;
   Mat2 stretch;
   stretch << 1.0 + 1e-4, 0.0, 0.0, 1.0;
   set_affine_deformation(model, 0, stretch);
@@ -409,7 +410,7 @@ Eigen::VectorXd damped_vibration(bool imex, double dt, double duration) {
     model.nodes.vx[i] = -0.5 * dt * model.nodes.fx[i] * model.nodes.inverse_mass[i];
     model.nodes.vy[i] = -0.5 * dt * model.nodes.fy[i] * model.nodes.inverse_mass[i];
   }
-  ExplicitSolver solver(model);
+  Stepper solver(model, nullptr, IntegratorParams{imex});
   const long steps = std::lround(duration / dt);
   for (long s = 0; s < steps; ++s)
     solver.step(dt);

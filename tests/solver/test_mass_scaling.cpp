@@ -8,9 +8,9 @@
 #include "../scenes/free_grains.h"
 #include "core/error.h"
 #include "geometry/shapes.h"
-#include "solver/explicit_solver.h"
 #include "solver/mass_scaling.h"
 #include "solver/stable_time_step.h"
+#include "solver/stepper.h"
 
 namespace sg {
 namespace {
@@ -52,8 +52,8 @@ TEST(MassScaling, ScalesOnlyTheBodiesBelowTheTargetAndTheStepReachesIt) {
   const MassScalingReport report = apply_mass_scaling(model, target, safety, 0.0);
   EXPECT_EQ(report.scaled_bodies, 1);
   EXPECT_EQ(report.max_factor_body, fine);
-  const Body& c = model.bodies[static_cast<std::size_t>(coarse)];
-  const Body& f = model.bodies[static_cast<std::size_t>(fine)];
+  const Body& c = model.body(coarse);
+  const Body& f = model.body(fine);
   EXPECT_EQ(c.mass_scale, 1.0);
   for (int i = c.node_begin; i < c.node_end; ++i)
     EXPECT_EQ(model.nodes.mass[static_cast<std::size_t>(i)],
@@ -91,25 +91,24 @@ TEST(MassScaling, GravityActsOnThePhysicalMassAndTheLedgerBalances) {
   const double k = 1000.0;
   const MassScalingReport report = apply_mass_scaling(model, 4.0 * physical_step, 0.8, k);
   ASSERT_EQ(report.scaled_bodies, 2);
-  const double s_grain = model.bodies[static_cast<std::size_t>(grain)].mass_scale;
-  const double s_stone = model.bodies[static_cast<std::size_t>(stone)].mass_scale;
+  const double s_grain = model.body(grain).mass_scale;
+  const double s_stone = model.body(stone).mass_scale;
   EXPECT_GT(s_grain, 10.0);  // four times the step: ~16 times the mass
   EXPECT_GT(s_stone, 1.0);
   // With contacts each body's estimate holds its partners' contact terms too: the passes
   // still bring the step of the scaled model to the target.
   EXPECT_GE(estimate_stable_time_step(model, 0.8, k).dt, (1.0 - 1e-4) * 4.0 * physical_step);
 
-  ExplicitSolver solver(model);
+  Stepper solver(model);
   const double dt = 4.0 * physical_step;
   const int steps = 200;
   for (int i = 0; i < steps; ++i)
     solver.step(dt);
   const double t = steps * dt;
-  const Body& g = model.bodies[static_cast<std::size_t>(grain)];
+  const Body& g = model.body(grain);
   for (int i = g.node_begin; i < g.node_end; ++i)
     ASSERT_NEAR(model.nodes.vy[static_cast<std::size_t>(i)], -t / s_grain, 1e-12 * t);
-  const auto r =
-      static_cast<std::size_t>(model.bodies[static_cast<std::size_t>(stone)].rigid_index);
+  const auto r = static_cast<std::size_t>(model.body(stone).rigid_index);
   EXPECT_NEAR(model.rigid.vy[r], -t / s_stone, 1e-12 * t);
   const EnergyLedger& e = solver.state().energy;
   EXPECT_GT(e.external_work, 0.0);

@@ -63,7 +63,7 @@ struct Scene {
                            s.cutoff = 0.02;
                            return s;
                          }()};
-  ExplicitSolver solver{model, &contacts};
+  Stepper solver{model, &contacts};
 };
 
 double time_step(const Scene& run) {
@@ -202,24 +202,25 @@ TEST(StateSnapshot, CaptureReusesTheSnapshotBuffers) {
 
 TEST(StateSnapshot, SolverMembersAreTheOnesTheSnapshotKnows) {
   // SolverSnapshotAccess (state_snapshot.cpp) copies the solver's private pending
-  // increments by name. A member added to ExplicitSolver changes its size and fails this
+  // increments by name. A member added to Stepper changes its size and fails this
   // test: if the member carries state from one step to the next, add it to
   // SolverSnapshotAccess and SolverPendingIncrements (and to io/checkpoint.cpp), then update
   // the expected layout here.
-  // Not state: the profile (timing), the IMEX systems (factors are a function of the model and
-  // the step, rebuilt on demand, bitwise the same), and three scratch vectors.
-  const std::size_t known = sizeof(Model*) + sizeof(ContactSystem*) + sizeof(SolverState) +
-                            sizeof(SolverPendingIncrements) + sizeof(StepProfile) +
-                            sizeof(std::unique_ptr<ImplicitViscosity>) +
+  // Not state: the integrator's settings (fixed parameters), the profile (timing), the IMEX
+  // systems (factors are a function of the model and the step, rebuilt on demand, bitwise the
+  // same), and three scratch vectors.
+  const std::size_t known = sizeof(Model*) + sizeof(ContactSystem*) + sizeof(IntegratorParams) +
+                            sizeof(SolverState) + sizeof(SolverPendingIncrements) +
+                            sizeof(StepProfile) + sizeof(std::unique_ptr<ImplicitViscosity>) +
                             4 * sizeof(std::vector<double>);
-  EXPECT_EQ(sizeof(ExplicitSolver), known);
+  EXPECT_EQ(sizeof(Stepper), known);
 }
 
 TEST(StateSnapshot, SnapshotOfAnotherModelIsRefused) {
   Scene run;
   const StateSnapshot snapshot = capture_state(run.solver, &run.contacts);
   Model other = scenes::single_disc(scenes::elastic_material(), 0.5, 0.1);
-  ExplicitSolver solver(other);
+  Stepper solver(other);
   try {
     restore_state(snapshot, solver, nullptr);
     FAIL() << "a snapshot of another model was restored";

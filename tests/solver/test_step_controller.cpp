@@ -17,7 +17,7 @@ namespace {
 struct Impact {
   Model model;
   std::unique_ptr<ContactSystem> contacts;
-  std::unique_ptr<ExplicitSolver> solver;
+  std::unique_ptr<Stepper> solver;
   Impact() {
     const MaterialId soft =
         model.add_material(scenes::elastic_material(MaterialLaw::neo_hookean, 0.002));
@@ -26,7 +26,7 @@ struct Impact {
     const BodyId floor =
         model.add_rigid_body("floor", make_rectangle(Vec2(-2, -1), Vec2(2, 0), 0.1), hard);
     scenes::fix_rigid(model, floor);
-    const Body& b = model.bodies[static_cast<std::size_t>(disc)];
+    const Body& b = model.body(disc);
     for (int i = b.node_begin; i < b.node_end; ++i)
       model.nodes.vy[static_cast<std::size_t>(i)] = -1.0;
     ContactLawParams law;
@@ -35,7 +35,7 @@ struct Impact {
     ContactSettings settings;
     settings.cutoff = 0.03;
     contacts = std::make_unique<ContactSystem>(model, scenes::single_law(model, law), settings);
-    solver = std::make_unique<ExplicitSolver>(model, contacts.get());
+    solver = std::make_unique<Stepper>(model, contacts.get());
   }
 };
 

@@ -11,8 +11,8 @@
 #include "core/error.h"
 #include "model/kinematics.h"
 #include "scenes/free_grains.h"
-#include "solver/explicit_solver.h"
 #include "solver/stable_time_step.h"
+#include "solver/stepper.h"
 
 namespace sg {
 namespace {
@@ -30,7 +30,7 @@ TEST(StripServo, LoadedBackFaceMovesAsOneReachesTerminalVelocityAndTheLedgerClos
   Model model;
   model.gravity = Vec2(0.0, -1.0);
   const BodyId strip = add_strip(model);
-  const Body& body = model.bodies[static_cast<std::size_t>(strip)];
+  const Body& body = model.body(strip);
   NodeDrive& d = model.node_drives[static_cast<std::size_t>(body.node_drive)];
   const double load = 5.0, c = 20.0;
   d.mode[0] = DriveMode::velocity;
@@ -38,7 +38,7 @@ TEST(StripServo, LoadedBackFaceMovesAsOneReachesTerminalVelocityAndTheLedgerClos
   d.mode[1] = DriveMode::load;
   d.load[1] = PiecewiseLinear{{0.0, 1.0}, {0.0, load}};
   d.load_damping[1] = c;
-  ExplicitSolver solver(model);
+  Stepper solver(model);
   const double dt = estimate_stable_time_step(model, 0.5).dt;
   const double mass = total_mass(model);
   ASSERT_NEAR(mass, 10.0, 1e-9);
@@ -96,11 +96,9 @@ TEST(StripServo, LoadedBackFaceMovesAsOneReachesTerminalVelocityAndTheLedgerClos
 TEST(StripServo, ForceModeOnNodesIsRefused) {
   Model model;
   const BodyId strip = add_strip(model);
-  model
-      .node_drives[static_cast<std::size_t>(
-          model.bodies[static_cast<std::size_t>(strip)].node_drive)]
-      .mode[1] = DriveMode::force;
-  ExplicitSolver solver(model);
+  model.node_drives[static_cast<std::size_t>(model.body(strip).node_drive)].mode[1] =
+      DriveMode::force;
+  Stepper solver(model);
   try {
     solver.step(1e-4);
     FAIL() << "force mode accepted";

@@ -1,5 +1,5 @@
 // Changes of the time step in the explicit solver (issue #4 "Step control";
-// solver/explicit_solver.h): the variable-step central difference and the energy ledger's
+// solver/stepper.h): the variable-step central difference and the energy ledger's
 // pairing of each interval with its own step.
 #include <gtest/gtest.h>
 
@@ -14,8 +14,8 @@
 #include "model/kinematics.h"
 #include "scenes/contact_scenes.h"
 #include "scenes/free_grains.h"
-#include "solver/explicit_solver.h"
 #include "solver/stable_time_step.h"
+#include "solver/stepper.h"
 
 namespace sg {
 namespace {
@@ -46,8 +46,7 @@ std::unique_ptr<Scene> servo_strip() {
   Model& model = s->model;
   model.gravity = Vec2(0.0, -1.0);
   const BodyId strip = scenes::add_flat_rubber_strip(model);
-  NodeDrive& d = model.node_drives[static_cast<std::size_t>(
-      model.bodies[static_cast<std::size_t>(strip)].node_drive)];
+  NodeDrive& d = model.node_drives[static_cast<std::size_t>(model.body(strip).node_drive)];
   d.mode[0] = DriveMode::velocity;
   d.velocity[0] = PiecewiseLinear{{0.0, 0.2}, {0.0, 0.5}};
   d.mode[1] = DriveMode::load;
@@ -97,7 +96,7 @@ struct LedgerRun {
 
 // Steps `scene` with dt_k = pattern[k mod size] x stable for `steps` steps.
 LedgerRun run_ledger(Scene& scene, const std::vector<double>& pattern, long steps) {
-  ExplicitSolver solver(scene.model, scene.contacts.get());
+  Stepper solver(scene.model, scene.contacts.get());
   LedgerRun r;
   double scale = 0.0;
   for (long k = 0; k < steps; ++k) {
@@ -181,7 +180,7 @@ TEST(VariableStep, LedgerOfALoadedRigidDiscClosesUnderChangingSteps) {
 // time T against a reference run with a constant step 16 times smaller than the finest.
 // The step changes twice at fixed times: dt over [0, 3T/8), dt/2 over [3T/8, 11T/16),
 // 1.25 dt to T (a halving, then a growth, as the step controller makes them).
-// The solver takes the initial velocities as v_-1/2 (explicit_solver.h); a start from rest at
+// The solver takes the initial velocities as v_-1/2 (stepper.h); a start from rest at
 // t = 0 is v_-1/2 = -dt_0/2 a_0 + O(dt^3) (v is odd in t), which `consistent` sets.
 struct Segment {
   double fraction;  // of the base step
@@ -202,7 +201,7 @@ std::vector<double> displacements_at(const std::vector<Segment>& schedule, doubl
       n.vy[i] = -0.5 * first * n.inverse_mass[i] * n.fy[i];
     }
   }
-  ExplicitSolver solver(s->model);
+  Stepper solver(s->model);
   for (const Segment& segment : schedule)
     for (long k = 0; k < segment.steps * refinement; ++k)
       solver.step(segment.fraction * dt);

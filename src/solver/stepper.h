@@ -1,5 +1,10 @@
 #pragma once
-// Explicit central-difference (leapfrog) time stepping of a Model with a step that may change
+// The Stepper takes one time step of a Model: the phases of the step, timed into its profile,
+// with either integrator (solver/integrator_params.h): explicit central difference, or IMEX
+// with the bulk damping implicit (solver/implicit_viscosity.h). It holds the step only: the
+// energy ledger is solver/energy_ledger.h, the step control solver/step_controller.h.
+//
+// Central-difference (leapfrog) time stepping of a Model with a step that may change
 // from one step to the next (docs/method.md "Time integration"; Belytschko, Liu & Moran,
 // "Nonlinear Finite Elements for Continua and Structures", §6.2, box 6.1). With dt_- = t_n -
 // t_n-1 the step that ended at t_n and dt_+ = t_n+1 - t_n the step about to be taken:
@@ -55,47 +60,13 @@
 #include "contact/contact_system.h"
 #include "model/internal_forces.h"
 #include "model/model.h"
+#include "solver/energy_ledger.h"
 #include "solver/implicit_viscosity.h"
+#include "solver/integrator_params.h"
 #include "solver/step_profile.h"
+#include "solver/step_sizes.h"
 
 namespace sg {
-
-// Cumulative energies since the start of the run (energy units: force x length).
-struct EnergyLedger {
-  double kinetic = 0.0;             // K_n^+ at the last force evaluation (see above)
-  double elastic = 0.0;             // strain energy at the last force evaluation
-  double external_work = 0.0;       // work of external forces (gravity, loads) so far
-  double damping_dissipated = 0.0;  // energy dissipated by bulk damping so far
-  double contact_dissipated = 0.0;  // energy dissipated at contacts so far
-  // Energy dissipated so far by the viscous force of servo-loaded rigid degrees of freedom
-  // (DriveMode::load). Kept apart from the bulk damping: it is a device of the loading,
-  // not a property of the third body, and must not count in the bulk share p_wb.
-  double servo_dissipated = 0.0;
-  double contact_elastic = 0.0;  // elastic energy held by contact springs now
-  // Energy the changes of the time step have added to the scheme's kinetic energy so far:
-  // the sum over force evaluations of K_n^+ - K_n^- = -1/8 (dt_+^2 - dt_-^2) F_n . F_n / m
-  // (see above). 0 while the step does not change. A numerical term, kept apart from the
-  // residual (see there).
-  double step_change = 0.0;
-  // Energy balance residual:
-  //   W_ext + S - (K - K0) - (E - E0) - D_bulk - D_contact - D_servo,
-  // with S = step_change and K0, E0 the values at the first force evaluation (E includes the
-  // contact springs). With S counted the residual is the sum of the intervals' integration
-  // errors: for a linear undamped system it stays at round-off under any sequence of steps.
-  double initial_kinetic = 0.0, initial_elastic = 0.0;
-  double residual() const;
-};
-
-// Work and dissipation over the last step [t_n, t_n+1], booked at the next step so that the
-// ledger always describes one instant (see above): part of the state although private to the
-// solver (checkpointed, restored with a rejected step: solver/state_snapshot.h).
-struct SolverPendingIncrements {
-  double external_work = 0.0;
-  double damping_dissipation = 0.0;
-  double load_work = 0.0;  // servo-loaded degrees of freedom, rigid or node carriers
-  double servo_dissipation = 0.0;
-  double drive_work = 0.0;  // reactions of driven field nodes (NodeDrive)
-};
 
 struct SolverState {
   double time = 0.0;  // time of the current displacements (the ledger is one step behind)
@@ -107,14 +78,15 @@ struct SolverState {
   EnergyLedger energy;
 };
 
-class ExplicitSolver {
+class Stepper {
  public:
-  // `contacts` may be null (free grains). With Model::implicit_viscosity the damped deformable
-  // bodies' viscous forces are implicit (IMEX, solver/implicit_viscosity.h).
-  explicit ExplicitSolver(Model& model, ContactSystem* contacts = nullptr);
-  ~ExplicitSolver();
-  ExplicitSolver(const ExplicitSolver&) = delete;
-  ExplicitSolver& operator=(const ExplicitSolver&) = delete;
+  // `contacts` may be null (free grains). With integrator.implicit_viscosity the damped
+  // deformable bodies' viscous forces are implicit (IMEX, solver/implicit_viscosity.h).
+  explicit Stepper(Model& model, ContactSystem* contacts = nullptr,
+                   const IntegratorParams& integrator = {});
+  ~Stepper();
+  Stepper(const Stepper&) = delete;
+  Stepper& operator=(const Stepper&) = delete;
 
   // Advances one step of size dt. Throws sg::Error with the body, node and step when the
   // state becomes invalid (inverted Gauss point, non-finite velocity).
@@ -123,6 +95,7 @@ class ExplicitSolver {
   const SolverState& state() const { return state_; }
   SolverState& state() { return state_; }
   Model& model() { return model_; }
+  const IntegratorParams& integrator() const { return integrator_; }
   // Wall time per phase of the steps taken so far (timing only, see step_profile.h); the run
   // loop books its own phases (step control, outputs) into the same profile.
   const StepProfile& profile() const { return profile_; }
@@ -136,6 +109,7 @@ class ExplicitSolver {
  private:
   Model& model_;
   ContactSystem* contacts_;
+  IntegratorParams integrator_;
   SolverState state_;
   SolverPendingIncrements pending_;
   StepProfile profile_;
@@ -144,18 +118,6 @@ class ExplicitSolver {
   // (solver/state_snapshot.cpp): every member that is not scratch or timing.
   friend struct SolverSnapshotAccess;
 
-  // The two steps around t_n (see the header).
-  struct StepSizes {
-    double previous;  // dt_- = t_n - t_n-1 (dt_+ at the first step)
-    double next;      // dt_+ = t_n+1 - t_n
-    double velocity;  // h_n = (dt_- + dt_+) / 2, the interval between v_n-1/2 and v_n+1/2
-  };
-  // Power of the servo loads (DriveMode::load) at the force evaluation: F_n . v and
-  // (c v_n+1/2) . v with v = v_n-1/2 (old) and v = v_n+1/2 (new), summed over rigid degrees
-  // of freedom and node-drive carriers.
-  struct ServoPower {
-    double load_old = 0.0, load_new = 0.0, servo_old = 0.0, servo_new = 0.0;
-  };
   // What the velocity update of the field nodes measured, summed over bodies in body order.
   struct NodeUpdate {
     double kinetic = 0.0;         // time-centred, 1/2 m v_n-1/2 v_n+1/2
@@ -181,16 +143,16 @@ class ExplicitSolver {
     ServoPower servo;
   };
 
-  // The phases of step(), in order (solver/explicit_solver.cpp).
-  StepSizes step_sizes(double dt) const;
+  // The phases of step(), in order (solver/stepper.cpp).
   void apply_external_forces();
-  ContactStepResult compute_contact_forces(double dt_prev);
+  ContactStepResult compute_contact_forces(const StepSizes& steps);
   InternalForceResult compute_internal_forces();
   NodeUpdate update_node_velocities(const StepSizes& steps);  // solver/node_update.cpp
   // From the node carriers' servo power (summed on, so the sums keep their order).
   RigidUpdate advance_rigid_bodies(const StepSizes& steps,
                                    const ServoPower& carriers);  // solver/rigid_update.cpp
   void update_node_positions(double dt);                         // solver/node_update.cpp
+  // The ledger phase: what the phases measured, booked (solver/energy_ledger.h).
   void book_energy(const StepSizes& steps, const ContactStepResult& contact,
                    const InternalForceResult& internal, const NodeUpdate& nodes,
                    const RigidUpdate& rigid);
@@ -201,9 +163,6 @@ class ExplicitSolver {
   // to the drive's imposed-velocity slots of `drive_data` (6 per drive, node_update.cpp);
   // their servo power.
   ServoPower advance_node_carriers(double h, double* drive_data) const;
-  // Books the load work and servo dissipation of every DriveMode::load degree of freedom,
-  // split over two steps.
-  void book_servo_loads(const StepSizes& steps, const ServoPower& power);
   void wrap_periodic_bodies();
   void check_finite_velocities() const;
 

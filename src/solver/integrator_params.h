@@ -1,0 +1,22 @@
+#pragma once
+// The time integrator's settings ([time] integrator, imex_tolerance, imex_refactor_threshold):
+// how the stepper treats the bulk damping, explicitly (central difference, the viscous force at
+// v_n-1/2) or implicitly per damped deformable body (IMEX, solver/implicit_viscosity.h). A
+// parameter of the step, not of the model: the stepper, the stable step estimate and mass
+// scaling take it (an implicit viscosity does not limit the step), so that two integrators can
+// be compared on one model (`softgrain info`) without changing it.
+namespace sg {
+
+struct IntegratorParams {
+  bool implicit_viscosity = false;       // IMEX; false: explicit
+  double imex_tolerance = 1e-5;          // relative residual of the iterative solves (scenario.md)
+  double imex_refactor_threshold = 0.1;  // objective model's preconditioner (implicit_viscosity.h)
+
+  static IntegratorParams explicit_integrator() { return {}; }
+  static IntegratorParams imex(double tolerance = 1e-5, double refactor_threshold = 0.1) {
+    return {true, tolerance, refactor_threshold};
+  }
+  const char* name() const { return implicit_viscosity ? "imex" : "explicit"; }
+};
+
+}  // namespace sg

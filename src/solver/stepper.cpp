@@ -1,0 +1,114 @@
+#include "solver/stepper.h"
+
+#include <cmath>
+
+#include "core/error.h"
+
+namespace sg {
+
+Stepper::Stepper(Model& model, ContactSystem* contacts, const IntegratorParams& integrator)
+    : model_(model), contacts_(contacts), integrator_(integrator) {
+  if (integrator.implicit_viscosity)
+    implicit_ = std::make_unique<ImplicitViscosity>(model, integrator.imex_tolerance,
+                                                    integrator.imex_refactor_threshold);
+}
+
+Stepper::~Stepper() = default;
+
+ViscousSolveStatistics Stepper::viscous_statistics() const {
+  return implicit_ ? implicit_->statistics() : ViscousSolveStatistics{};
+}
+
+void Stepper::refresh_implicit_preconditioners() {
+  if (implicit_) implicit_->refresh_preconditioners();
+}
+
+// One step, as the algorithm of the header reads: forces at u_n, then velocities, then
+// positions, then the ledger of the instant t_n. Each phase is timed into profile().
+void Stepper::step(double dt) {
+  PhaseTimer timer(profile_);
+  const StepSizes steps = step_sizes(state_.previous_dt, dt);
+  apply_external_forces();
+  timer.stamp(StepPhase::external_forces);
+  const ContactStepResult contact = compute_contact_forces(steps);
+  timer.stamp(StepPhase::contacts);
+  const InternalForceResult internal = compute_internal_forces();
+  timer.stamp(StepPhase::internal_forces);
+  const NodeUpdate nodes = update_node_velocities(steps);
+  timer.stamp(StepPhase::velocities);
+  const RigidUpdate rigid = advance_rigid_bodies(steps, nodes.carriers);
+  timer.stamp(StepPhase::rigid_bodies);
+  update_node_positions(dt);
+  timer.stamp(StepPhase::positions);
+  book_energy(steps, contact, internal, nodes, rigid);
+  finish_step(dt);
+  timer.stamp(StepPhase::ledger);
+  ++profile_.steps;
+}
+
+void Stepper::apply_external_forces() {
+  // With lumped (row-sum) masses, the consistent gravity load on the parameter I is
+  // integral(N_I rho g) = m_I g. Loops over nodes run per body in parallel: each body writes
+  // its own node range, so the result does not depend on the number of threads.
+  NodeState& n = model_.nodes;
+  const double gx = model_.gravity.x(), gy = model_.gravity.y();
+  const int body_count = static_cast<int>(model_.bodies.size());
+#pragma omp parallel for schedule(static)
+  for (int b = 0; b < body_count; ++b) {
+    const Body& body = model_.body(b);
+    // Gravity acts on the physical mass (mass scaling changes the inertia only).
+    const double bgx = gx / body.mass_scale, bgy = gy / body.mass_scale;
+    for (int k = body.node_begin; k < body.node_end; ++k) {
+      const auto i = static_cast<std::size_t>(k);
+      n.fx[i] = n.mass[i] * bgx;
+      n.fy[i] = n.mass[i] * bgy;
+    }
+  }
+  RigidState& rigid = model_.rigid;
+  std::fill(rigid.fx.begin(), rigid.fx.end(), 0.0);
+  std::fill(rigid.fy.begin(), rigid.fy.end(), 0.0);
+  std::fill(rigid.torque.begin(), rigid.torque.end(), 0.0);
+}
+
+ContactStepResult Stepper::compute_contact_forces(const StepSizes& steps) {
+  if (!contacts_) return {};
+  // The step that led to u_n (contact damping turns the slip and gap increments into rates),
+  // and whether this is the run's first evaluation (where bonded laws form their bonds).
+  const ContactEvaluation evaluation{steps.previous, state_.step == 0};
+  try {
+    return contacts_->add_contact_forces(model_, evaluation);
+  } catch (const Error& e) {
+    SG_THROW(e.what() << " at step " << state_.step << ", time " << state_.time);
+  }
+}
+
+InternalForceResult Stepper::compute_internal_forces() {
+  try {
+    return add_internal_forces(model_);
+  } catch (const Error& e) {
+    SG_THROW(e.what() << " at step " << state_.step << ", time " << state_.time);
+  }
+}
+
+void Stepper::book_energy(const StepSizes& steps, const ContactStepResult& contact,
+                          const InternalForceResult& internal, const NodeUpdate& nodes,
+                          const RigidUpdate& rigid) {
+  StepEnergyTerms terms;
+  terms.kinetic = nodes.kinetic + rigid.kinetic;
+  terms.external_power = nodes.external_power + rigid.external_power;
+  terms.force_power = nodes.force_power + rigid.force_power;
+  terms.force_square = nodes.force_square + rigid.force_square;
+  terms.elastic_energy = internal.elastic_energy;
+  // IMEX: the damping power of the viscous force the solve applied (implicit_viscosity.h).
+  terms.damping_power =
+      implicit_ ? internal.damping_power + nodes.damping_correction : internal.damping_power;
+  terms.viscous_power = nodes.viscous_power;
+  terms.contact_dissipated = contact.dissipated;
+  terms.contact_stored = contact.stored_energy;
+  terms.drive_work_old = nodes.drive_work_old;
+  terms.drive_work_new = nodes.drive_work_new;
+  terms.servo = rigid.servo;
+  book_step_energy(steps, terms, state_.step == 0, state_.energy, pending_);
+}
+
+}  // namespace sg
