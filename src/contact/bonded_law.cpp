@@ -36,7 +36,7 @@ void form_initial_bond(const ContactLawParams& params, const ContactKinematics& 
 
 ContactTraction evaluate_residual(const ContactLawParams& residual, double normal_gap,
                                   double slip_increment, ContactHistory& history) {
-  ContactTraction out = evaluate_basic_law(residual, normal_gap, slip_increment, history);
+  ContactTraction out = evaluate_cohesive(residual, normal_gap, slip_increment, history);
   history.intact = false;
   history.energy = stored_energy(residual, normal_gap, history);
   return out;

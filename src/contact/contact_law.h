@@ -135,6 +135,17 @@ enum class ContactLength { current, initial };
 // The name used in scenario files and messages ("frictionless", "coulomb", "cohesive",
 // "two_slope", "bonded", "cohesive_zone").
 const char* contact_law_kind_name(ContactLawKind kind);
+inline const char* to_string(ContactLawKind kind) {
+  return contact_law_kind_name(kind);
+}
+// Every law, for readers that parse a name by to_string (scenario/toml_reader.h, named_value).
+inline constexpr ContactLawKind kContactLawKinds[] = {
+    ContactLawKind::frictionless, ContactLawKind::coulomb, ContactLawKind::cohesive,
+    ContactLawKind::two_slope,    ContactLawKind::bonded,  ContactLawKind::cohesive_zone};
+
+// "current" or "initial", as scenario files name them.
+const char* to_string(ContactLength length);
+inline constexpr ContactLength kContactLengths[] = {ContactLength::current, ContactLength::initial};
 
 // Law coefficients (immutable, from the scenario). Strengths are for the whole physical
 // contact; see per_pass_params for the two-pass scheme.

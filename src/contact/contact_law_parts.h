@@ -10,10 +10,22 @@ namespace sg::contact_law_parts {
 void apply_tangential_threshold(double tangential_stiffness, double threshold, double trial_slip,
                                 ContactHistory& history, ContactTraction& out);
 
-// The frictionless, coulomb and cohesive laws (contact_law.h), with their own dissipation;
-// leaves history.normal_gap to the caller.
-ContactTraction evaluate_basic_law(const ContactLawParams& params, double normal_gap,
-                                   double slip_increment, ContactHistory& history);
+// A contact that lets go (surfaces separate, a bond breaks): no traction, the tangential
+// spring unloaded and the contact inactive; `released_energy` is booked as dissipated.
+ContactTraction open_contact(double released_energy, ContactHistory& history);
+
+// The tangential slip a law tries this increment: g_t + ds, or 0 for a contact that was not
+// active at its start (it starts the increment tangentially unloaded).
+double trial_slip(const ContactHistory& history, double slip_increment);
+
+// The basic laws (contact_law.h), one file each, with their own dissipation; they leave
+// history.normal_gap to the caller.
+ContactTraction evaluate_frictionless(const ContactLawParams& params, double normal_gap,
+                                      ContactHistory& history);
+ContactTraction evaluate_coulomb(const ContactLawParams& params, double normal_gap,
+                                 double slip_increment, ContactHistory& history);
+ContactTraction evaluate_cohesive(const ContactLawParams& params, double normal_gap,
+                                  double slip_increment, ContactHistory& history);
 
 // The laws whose dissipation is the work of their tractions less the change of the energy
 // they store (contact_law.h, "Dissipation of the damage laws"): they set the tractions, the

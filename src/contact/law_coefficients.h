@@ -2,8 +2,11 @@
 // The coefficients that only some contact laws use, in one table: which laws use each, its
 // value in the laws that do not, and how the scenario reads it. The scenario reader
 // (scenario/contact_law_def.cpp) accepts, reads and refuses the keys of [[contact_laws]] from
-// it, and validate() (contact_law.h) refuses a coefficient set on a law that does not use it:
-// adding a coefficient to a law is one row here (and its use in the law's evaluation).
+// it, and validate() (contact_law.h) refuses a coefficient set on a law that does not use it
+// or out of its row's bound: adding a coefficient to a law is one row here (and its use in the
+// law's evaluation). The coefficients every law reads (normal_stiffness, tangential_stiffness,
+// friction, adhesion, shear_strength, damping_ratio, length) are ContactLawParams' first
+// members, read and checked by the reader and validate() themselves.
 #include <initializer_list>
 #include <span>
 #include <string>

@@ -9,7 +9,7 @@
 
 #include "core/error.h"
 #include "io/atomic_file.h"
-#include "solver/step_controller.h"
+#include "io/binary_archive.h"
 
 namespace sg {
 
@@ -34,112 +34,6 @@ std::uint64_t fnv1a(std::string_view bytes) {
   return h;
 }
 
-template <class T>
-struct is_vector : std::false_type {};
-template <class T, class A>
-struct is_vector<std::vector<T, A>> : std::true_type {};
-template <class T>
-struct is_pair : std::false_type {};
-template <class A, class B>
-struct is_pair<std::pair<A, B>> : std::true_type {};
-
-// Appends values as their native bytes; strings and vectors with a u64 count first.
-class Writer {
- public:
-  std::string bytes;
-
-  template <class T>
-  void operator()(const T& v) {
-    if constexpr (std::is_arithmetic_v<T> || std::is_enum_v<T>) {
-      raw(&v, sizeof v);
-    } else if constexpr (std::is_same_v<T, std::string>) {
-      (*this)(static_cast<std::uint64_t>(v.size()));
-      raw(v.data(), v.size());
-    } else if constexpr (std::is_same_v<T, Vec2>) {
-      (*this)(v.x());
-      (*this)(v.y());
-    } else if constexpr (is_vector<T>::value) {
-      (*this)(static_cast<std::uint64_t>(v.size()));
-      if constexpr (std::is_arithmetic_v<typename T::value_type>)
-        raw(v.data(), v.size() * sizeof(typename T::value_type));
-      else
-        for (const auto& e : v)
-          (*this)(e);
-    } else if constexpr (is_pair<T>::value) {
-      (*this)(v.first);
-      (*this)(v.second);
-    } else {
-      describe(*this, v);
-    }
-  }
-
- private:
-  void raw(const void* p, std::size_t n) { bytes.append(static_cast<const char*>(p), n); }
-};
-
-// Thrown by Reader when the payload ends early or holds an impossible count; turned into a
-// message naming the file by read_checkpoint().
-struct Malformed {
-  std::string what;
-};
-
-class Reader {
- public:
-  explicit Reader(std::string_view bytes) : bytes_(bytes) {}
-  bool at_end() const { return position_ == bytes_.size(); }
-
-  template <class T>
-  void operator()(T& v) {
-    if constexpr (std::is_same_v<T, bool>) {
-      std::uint8_t b = 0;
-      raw(&b, 1);
-      if (b > 1) throw Malformed{"a flag holds " + std::to_string(b)};
-      v = b != 0;
-    } else if constexpr (std::is_arithmetic_v<T> || std::is_enum_v<T>) {
-      raw(&v, sizeof v);
-    } else if constexpr (std::is_same_v<T, std::string>) {
-      v.resize(count(1));
-      raw(v.data(), v.size());
-    } else if constexpr (std::is_same_v<T, Vec2>) {
-      (*this)(v.x());
-      (*this)(v.y());
-    } else if constexpr (is_vector<T>::value) {
-      using E = typename T::value_type;
-      v.resize(count(std::is_arithmetic_v<E> ? sizeof(E) : 1));
-      if constexpr (std::is_arithmetic_v<E>)
-        raw(v.data(), v.size() * sizeof(E));
-      else
-        for (auto& e : v)
-          (*this)(e);
-    } else if constexpr (is_pair<T>::value) {
-      (*this)(v.first);
-      (*this)(v.second);
-    } else {
-      describe(*this, v);
-    }
-  }
-
- private:
-  std::string_view bytes_;
-  std::size_t position_ = 0;
-
-  void raw(void* p, std::size_t n) {
-    if (n > bytes_.size() - position_) throw Malformed{"the payload ends early"};
-    if (n == 0) return;  // an empty vector's data() may be null, which memcpy may not take
-    std::memcpy(p, bytes_.data() + position_, n);
-    position_ += n;
-  }
-  // A count of elements of at least `element_bytes` each: refused if the rest of the
-  // payload cannot hold them (no huge allocation from a damaged count).
-  std::size_t count(std::size_t element_bytes) {
-    std::uint64_t n = 0;
-    raw(&n, sizeof n);
-    if (n > (bytes_.size() - position_) / element_bytes)
-      throw Malformed{"a count of " + std::to_string(n) + " exceeds the payload"};
-    return static_cast<std::size_t>(n);
-  }
-};
-
 // The ledger is a flat struct of doubles that grows with the physics (a new dissipation
 // channel, a new energy): it is saved whole, its size first, so that a new member is saved
 // without being listed here and a checkpoint from a build with another ledger is refused.
@@ -148,18 +42,19 @@ static_assert(std::is_trivially_copyable_v<EnergyLedger> &&
 
 using LedgerValues = std::array<double, sizeof(EnergyLedger) / sizeof(double)>;
 
-void save_ledger(Writer& w, const EnergyLedger& e) {
+void save_ledger(BinaryWriter& w, const EnergyLedger& e) {
   w(static_cast<std::uint32_t>(sizeof e));
   for (const double v : std::bit_cast<LedgerValues>(e))
     w(v);
 }
 
-void load_ledger(Reader& r, EnergyLedger& e) {
+void load_ledger(BinaryReader& r, EnergyLedger& e) {
   std::uint32_t size = 0;
   r(size);
   if (size != sizeof e)
-    throw Malformed{"its energy ledger has " + std::to_string(size) + " bytes, this build's " +
-                    std::to_string(sizeof e) + ": written by another softgrain version"};
+    throw MalformedPayload{"its energy ledger has " + std::to_string(size) +
+                           " bytes, this build's " + std::to_string(sizeof e) +
+                           ": written by another softgrain version"};
   LedgerValues values;
   for (double& v : values)
     r(v);
@@ -168,8 +63,8 @@ void load_ledger(Reader& r, EnergyLedger& e) {
 
 }  // namespace
 
-// What the payload holds, field by field. Each describe() serves both directions (Writer
-// with const objects, Reader with mutable ones): a field is listed once. A field added to
+// What the payload holds, field by field. Each describe() serves both directions
+// (io/binary_archive.h): a field is listed once. A field added to
 // one of these structs must be added here and kCheckpointFormatVersion bumped; the size
 // checks below catch a forgotten one at compile time where they can.
 template <class A, class S>
@@ -181,29 +76,6 @@ void describe(A& a, S& f) requires std::is_same_v<std::remove_const_t<S>, Checkp
   a(f.gauss_points);
   a(f.model_hash);
   a(f.settings_hash);
-}
-
-// The adaptive step controller's state (solver/step_controller.h), for the run loop to save
-// as a member of RunLoopState (with StepController::seal() before each checkpoint and
-// set_state() after a restore).
-template <class A, class S>
-void describe(A& a, S& t) requires std::is_same_v<std::remove_const_t<S>, StepStatistics> {
-  a(t.accepted);
-  a(t.rejected);
-  a(t.estimates);
-  a(t.dt_min);
-  a(t.dt_max);
-  a(t.last_rejection);
-}
-
-template <class A, class S>
-void describe(A& a, S& c) requires std::is_same_v<std::remove_const_t<S>, StepControllerState> {
-  a(c.dt);
-  a(c.stable_dt);
-  a(c.energy_scale);
-  a(c.since_estimate);
-  a(c.since_reduction);
-  a(c.statistics);
 }
 
 template <class A, class S>
@@ -252,20 +124,11 @@ void describe(A& a, S& c) requires std::is_same_v<std::remove_const_t<S>, Contac
 
 template <class A, class S>
 void describe(A& a, S& s) requires std::is_same_v<std::remove_const_t<S>, StateSnapshot> {
-  a(s.ref_x);
-  a(s.ux);
-  a(s.uy);
-  a(s.vx);
-  a(s.vy);
-  a(s.rigid_x);
-  a(s.rigid_y);
-  a(s.rigid_theta);
-  a(s.rigid_vx);
-  a(s.rigid_vy);
-  a(s.rigid_omega);
-  a(s.rigid_fx);
-  a(s.rigid_fy);
-  a(s.rigid_torque);
+  // The arrays in the snapshot's schema (solver/state_snapshot.h), then the rest.
+  for (const StateArray<NodeState>& row : kNodeStateArrays)
+    a(s.*row.snapshot);
+  for (const StateArray<RigidState>& row : kRigidStateArrays)
+    a(s.*row.snapshot);
   a(s.drive_reaction);
   static_assert(sizeof(SolverState) == 2 * sizeof(double) + sizeof(long) + sizeof(EnergyLedger),
                 "SolverState changed: update the checkpoint");
@@ -300,7 +163,7 @@ CheckpointFingerprint fingerprint_of(const Model& model, std::span<const double>
   f.rigid_bodies = model.rigid.size();
   f.contour_points = model.contour_point_count();
   f.gauss_points = model.gauss_point_count();
-  Writer w;
+  BinaryWriter w;
   for (const Body& b : model.bodies) {
     w(b.name);
     w(b.kind);
@@ -366,11 +229,12 @@ CheckpointFingerprint fingerprint_of(const Model& model, std::span<const double>
 }
 
 void write_checkpoint(const std::filesystem::path& path, const Checkpoint& checkpoint) {
-  Writer payload;
+  BinaryWriter payload;
   payload(checkpoint.fingerprint);
   payload(checkpoint.state);
-  describe(payload, checkpoint.loop);
-  Writer file;
+  payload.bytes +=
+      checkpoint.run_state;  // the run stage's, as it is (no count: it ends the payload)
+  BinaryWriter file;
   file.bytes.append(kMagic, sizeof kMagic);
   file(kCheckpointFormatVersion);
   file(kByteOrderMark);
@@ -414,7 +278,7 @@ Checkpoint read_checkpoint(const std::filesystem::path& path,
                                              << "-byte payload does not match)");
 
   Checkpoint c;
-  Reader reader(payload);
+  BinaryReader reader(payload);
   try {
     reader(c.fingerprint);
     const CheckpointFingerprint& f = c.fingerprint;
@@ -434,11 +298,10 @@ Checkpoint read_checkpoint(const std::filesystem::path& path,
               name << "written with other run settings (time step, output periods or contact "
                       "laws)");
     reader(c.state);
-    describe(reader, c.loop);
-  } catch (const Malformed& m) {
+    c.run_state = reader.take_rest();
+  } catch (const MalformedPayload& m) {
     SG_THROW(name << "malformed payload (" << m.what << ")");
   }
-  SG_VERIFY(reader.at_end(), name << "malformed payload (unread bytes at its end)");
   return c;
 }
 

@@ -8,7 +8,8 @@
 //   format version   u32      kCheckpointFormatVersion
 //   byte-order mark  u32      0x01020304
 //   payload size     u64      bytes
-//   payload                   fingerprint, state snapshot, run-loop state (see checkpoint.cpp)
+//   payload                   fingerprint, state snapshot (see checkpoint.cpp), then the run
+//                             stage's bytes (Checkpoint::run_state) to its end
 //   checksum         u64      FNV-1a 64 of the payload
 //
 // A reader refuses, with one line naming the file and the reason: a file that is not a
@@ -20,12 +21,8 @@
 #include <filesystem>
 #include <span>
 #include <string>
-#include <type_traits>
-#include <utility>
-#include <vector>
 
 #include "solver/state_snapshot.h"
-#include "solver/step_controller.h"
 
 namespace sg {
 
@@ -36,6 +33,8 @@ namespace sg {
 //    tractions, stored energy, viscous tractions, damage, intact / unloading flags).
 // 9: the run loop's last field snapshot (time and nodal strain norms), from which the next
 //    snapshot's strain_rate increment is measured (io/vtk_writer.h).
+// (A change of the run stage's part, run/run_loop_state.h, bumps this version too: a file
+// holds one version for the whole payload.)
 inline constexpr std::uint32_t kCheckpointFormatVersion = 9;
 
 // What identifies the scenario a checkpoint belongs to. The counts make the common mistake
@@ -57,54 +56,13 @@ struct CheckpointFingerprint {
 
 CheckpointFingerprint fingerprint_of(const Model& model, std::span<const double> run_settings);
 
-// One .pvd collection's entries: (time, file relative to the .pvd).
-using PvdEntries = std::vector<std::pair<double, std::string>>;
-
-// The run loop's own state (run/run.cpp), beside the solver's: what it has written and when
-// it writes next. A member added here must be added to describe() below, which reads and
-// writes it (and kCheckpointFormatVersion bumped).
-struct RunLoopState {
-  int next_snapshot = 0;          // index of the next fields/NNNNNN.vtu
-  double next_series_time = 0.0;  // time of the next series.csv row
-  double next_field_time = 0.0;   // time of the next field snapshot
-  double next_checkpoint_time = 0.0;
-  long series_rows = 0;            // data rows written to series.csv(.partial)
-  std::uint64_t series_bytes = 0;  // size of the series file after them (header included)
-  // Shear cells: sums over the second half of the run for the friction summary line.
-  double top_force_sum_x = 0.0, top_force_sum_y = 0.0;
-  long top_force_rows = 0;
-  PvdEntries field_entries, contact_entries;  // fields.pvd and contacts.pvd so far
-  StepControllerState controller;             // the adaptive step (sealed at checkpoints)
-  // The last committed field snapshot: its time and nodal |E| (io/vtk_writer.h
-  // nodal_strain_norms), the start of the next snapshot's strain_rate interval. Empty norms:
-  // no snapshot yet.
-  double strain_snapshot_time = 0.0;
-  std::vector<double> strain_snapshot_norm;
-};
-
-template <class Archive, class State>  // State: RunLoopState or const RunLoopState
-void describe(Archive& archive,
-              State& s) requires std::is_same_v<std::remove_const_t<State>, RunLoopState> {
-  archive(s.next_snapshot);
-  archive(s.next_series_time);
-  archive(s.next_field_time);
-  archive(s.next_checkpoint_time);
-  archive(s.series_rows);
-  archive(s.series_bytes);
-  archive(s.top_force_sum_x);
-  archive(s.top_force_sum_y);
-  archive(s.top_force_rows);
-  archive(s.field_entries);
-  archive(s.contact_entries);
-  archive(s.controller);
-  archive(s.strain_snapshot_time);
-  archive(s.strain_snapshot_norm);
-}
-
 struct Checkpoint {
   CheckpointFingerprint fingerprint;
   StateSnapshot state;
-  RunLoopState loop;
+  // The run stage's own state (its outputs' counters, next output times, the step
+  // controller: run/run_loop_state.h), encoded by that stage (io/binary_archive.h) and stored
+  // as it is at the end of the payload: what it holds is no concern of this stage.
+  std::string run_state;
 };
 
 // Writes `checkpoint` to `path` atomically. Throws sg::Error naming the path on failure.

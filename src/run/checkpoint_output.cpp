@@ -38,7 +38,7 @@ void write_run_checkpoint(RunContext& context, const std::filesystem::path& path
   loop.controller = sim.controller.state();
   capture_state(sim.solver, sim.contacts.get(), scratch.state);
   scratch.fingerprint = sim.fingerprint;
-  scratch.loop = loop;
+  encode_run_loop_state(loop, scratch.run_state);
   write_checkpoint(path, scratch);
   // A run resumed from here starts without the IMEX preconditioners' reference states: the
   // uninterrupted run drops them too, so that both go on with the same factors.
@@ -49,7 +49,7 @@ void resume_from_checkpoint(RunContext& context, const std::filesystem::path& pa
   Simulation& sim = context.simulation;
   const Checkpoint checkpoint = read_checkpoint(path, sim.fingerprint);
   restore_state(checkpoint.state, sim.solver, sim.contacts.get());
-  context.loop = checkpoint.loop;
+  context.loop = decode_run_loop_state(checkpoint.run_state, "checkpoint '" + path.string() + "'");
   sim.controller.set_state(context.loop.controller);
 }
 

@@ -4,6 +4,7 @@
 // the checkpoint's time (none at the end: a complete run needs none). The step controller is
 // sealed first, so that no rollback crosses a checkpoint and a resumed run repeats the
 // uninterrupted one bitwise.
+#include "io/checkpoint.h"
 #include "run/run_observer.h"
 
 namespace sg {

@@ -19,12 +19,13 @@
 // since then show the abandoned trajectory (step_controller.h). No rollback crosses a
 // checkpoint (the controller is sealed there).
 //
-// Observers share the run's RunLoopState (io/checkpoint.h): each owns its fields of it (next
-// output times, counters, .pvd entries) and keeps them current, so that a checkpoint writes
-// the loop state as it is and a resumed run restores every observer from it (begin(true)).
+// Observers share the run's RunLoopState (run_loop_state.h, the run stage's part of a
+// checkpoint): each owns its fields of it (next output times, counters, .pvd entries) and
+// keeps them current, so that a checkpoint writes the loop state as it is and a resumed run
+// restores every observer from it (begin(true)).
 #include <filesystem>
 
-#include "io/checkpoint.h"
+#include "run/run_loop_state.h"
 #include "run/simulation.h"
 #include "scenario/scenario.h"
 

@@ -8,17 +8,6 @@ namespace sg {
 
 namespace {
 
-ContactLawKind read_kind(const TomlReader& t) {
-  const std::string law = t.one_of(
-      "law", {"frictionless", "coulomb", "cohesive", "two_slope", "bonded", "cohesive_zone"},
-      "frictionless");
-  for (const ContactLawKind kind :
-       {ContactLawKind::frictionless, ContactLawKind::coulomb, ContactLawKind::cohesive,
-        ContactLawKind::two_slope, ContactLawKind::bonded, ContactLawKind::cohesive_zone})
-    if (law == contact_law_kind_name(kind)) return kind;
-  t.fail("law", "unknown law '" + law + "'");
-}
-
 // Keys that belong to some kinds only (contact/law_coefficients.h): given to another kind,
 // they are a mistake.
 void reject_keys_of_other_kinds(const TomlReader& t, ContactLawKind kind) {
@@ -67,7 +56,7 @@ ContactLawDef read_contact_law(const TomlReader& t) {
   d.material_a = pair.first;
   d.material_b = pair.second;
   ContactLawParams& p = d.params;
-  p.kind = read_kind(t);
+  p.kind = t.named_value("law", kContactLawKinds, ContactLawKind::frictionless);
   reject_keys_of_other_kinds(t, p.kind);
   p.normal_stiffness = t.positive("normal_stiffness");
   if (p.kind == ContactLawKind::cohesive_zone)
@@ -80,9 +69,7 @@ ContactLawDef read_contact_law(const TomlReader& t) {
   p.adhesion = t.non_negative("adhesion", cohesion);
   p.shear_strength = t.non_negative("shear_strength", cohesion);
   p.damping_ratio = t.non_negative("damping_ratio", 0.0);
-  p.length = t.one_of("length", {"current", "initial"}, "current") == "current"
-                 ? ContactLength::current
-                 : ContactLength::initial;
+  p.length = t.named_value("length", kContactLengths, ContactLength::current);
   read_kind_coefficients(t, p);
   try {
     validate(p, "contact law for materials '" + d.material_a + "' and '" + d.material_b + "'");

@@ -15,23 +15,11 @@ struct SolverSnapshotAccess {
 
 void capture_state(const Stepper& solver, const ContactSystem* contacts, StateSnapshot& snapshot) {
   const Model& model = SolverSnapshotAccess::model(solver);
-  const NodeState& n = model.nodes;
   // Vector assignment reuses the destination's capacity: no allocation once grown.
-  snapshot.ref_x = n.ref_x;
-  snapshot.ux = n.ux;
-  snapshot.uy = n.uy;
-  snapshot.vx = n.vx;
-  snapshot.vy = n.vy;
-  const RigidState& r = model.rigid;
-  snapshot.rigid_x = r.x;
-  snapshot.rigid_y = r.y;
-  snapshot.rigid_theta = r.theta;
-  snapshot.rigid_vx = r.vx;
-  snapshot.rigid_vy = r.vy;
-  snapshot.rigid_omega = r.omega;
-  snapshot.rigid_fx = r.fx;
-  snapshot.rigid_fy = r.fy;
-  snapshot.rigid_torque = r.torque;
+  for (const StateArray<NodeState>& a : kNodeStateArrays)
+    snapshot.*a.snapshot = model.nodes.*a.model;
+  for (const StateArray<RigidState>& a : kRigidStateArrays)
+    snapshot.*a.snapshot = model.rigid.*a.model;
   snapshot.drive_reaction.resize(2 * model.node_drives.size());
   for (std::size_t d = 0; d < model.node_drives.size(); ++d) {
     snapshot.drive_reaction[2 * d] = model.node_drives[d].reaction.x();
@@ -51,19 +39,16 @@ StateSnapshot capture_state(const Stepper& solver, const ContactSystem* contacts
 
 void restore_state(const StateSnapshot& snapshot, Stepper& solver, ContactSystem* contacts) {
   Model& model = solver.model();
-  NodeState& n = model.nodes;
-  const std::size_t nodes = n.size(), rigid = model.rigid.size();
-  for (const std::vector<double>* a :
-       {&snapshot.ref_x, &snapshot.ux, &snapshot.uy, &snapshot.vx, &snapshot.vy})
-    SG_VERIFY(a->size() == nodes, "state snapshot: " << a->size() << " node values for a model of "
-                                                     << nodes << " nodes");
-  for (const std::vector<double>* a :
-       {&snapshot.rigid_x, &snapshot.rigid_y, &snapshot.rigid_theta, &snapshot.rigid_vx,
-        &snapshot.rigid_vy, &snapshot.rigid_omega, &snapshot.rigid_fx, &snapshot.rigid_fy,
-        &snapshot.rigid_torque})
-    SG_VERIFY(a->size() == rigid, "state snapshot: " << a->size()
-                                                     << " rigid-body values for a model of "
-                                                     << rigid << " rigid bodies");
+  const std::size_t nodes = model.nodes.size(), rigid = model.rigid.size();
+  for (const StateArray<NodeState>& a : kNodeStateArrays)
+    SG_VERIFY((snapshot.*a.snapshot).size() == nodes,
+              "state snapshot: " << (snapshot.*a.snapshot).size() << " node values for a model of "
+                                 << nodes << " nodes");
+  for (const StateArray<RigidState>& a : kRigidStateArrays)
+    SG_VERIFY((snapshot.*a.snapshot).size() == rigid,
+              "state snapshot: " << (snapshot.*a.snapshot).size()
+                                 << " rigid-body values for a model of " << rigid
+                                 << " rigid bodies");
   SG_VERIFY(snapshot.drive_reaction.size() == 2 * model.node_drives.size(),
             "state snapshot: " << snapshot.drive_reaction.size() / 2
                                << " node drives for a model of " << model.node_drives.size());
@@ -84,21 +69,10 @@ void restore_state(const StateSnapshot& snapshot, Stepper& solver, ContactSystem
                   << " contour points, the model has " << points);
     contacts->restore(snapshot.contacts);
   }
-  n.ref_x = snapshot.ref_x;
-  n.ux = snapshot.ux;
-  n.uy = snapshot.uy;
-  n.vx = snapshot.vx;
-  n.vy = snapshot.vy;
-  RigidState& r = model.rigid;
-  r.x = snapshot.rigid_x;
-  r.y = snapshot.rigid_y;
-  r.theta = snapshot.rigid_theta;
-  r.vx = snapshot.rigid_vx;
-  r.vy = snapshot.rigid_vy;
-  r.omega = snapshot.rigid_omega;
-  r.fx = snapshot.rigid_fx;
-  r.fy = snapshot.rigid_fy;
-  r.torque = snapshot.rigid_torque;
+  for (const StateArray<NodeState>& a : kNodeStateArrays)
+    model.nodes.*a.model = snapshot.*a.snapshot;
+  for (const StateArray<RigidState>& a : kRigidStateArrays)
+    model.rigid.*a.model = snapshot.*a.snapshot;
   for (std::size_t d = 0; d < model.node_drives.size(); ++d)
     model.node_drives[d].reaction =
         Vec2(snapshot.drive_reaction[2 * d], snapshot.drive_reaction[2 * d + 1]);

@@ -30,9 +30,9 @@
 namespace sg {
 
 struct StateSnapshot {
-  // Field nodes, one entry per node.
+  // Field nodes, one entry per node; rigid bodies, one entry per rigid body (kNodeStateArrays,
+  // kRigidStateArrays below say which model array each copies).
   std::vector<double> ref_x, ux, uy, vx, vy;
-  // Rigid bodies, one entry per rigid body.
   std::vector<double> rigid_x, rigid_y, rigid_theta;
   std::vector<double> rigid_vx, rigid_vy, rigid_omega;
   std::vector<double> rigid_fx, rigid_fy, rigid_torque;
@@ -43,6 +43,34 @@ struct StateSnapshot {
   bool has_contacts = false;
   ContactSystemState contacts;
 };
+
+// The schema of the snapshot's arrays: each beside the model array it copies, in the order a
+// checkpoint saves them. capture_state() and restore_state() copy through these rows and the
+// checkpoint (io/checkpoint.cpp) saves through them, so that an array added to the evolving
+// state is a member above and a row here (and a checkpoint format version).
+template <class ModelArrays>
+struct StateArray {
+  std::vector<double> StateSnapshot::*snapshot;
+  std::vector<double> ModelArrays::*model;
+};
+
+inline constexpr StateArray<NodeState> kNodeStateArrays[] = {
+    {&StateSnapshot::ref_x, &NodeState::ref_x},
+    {&StateSnapshot::ux, &NodeState::ux},
+    {&StateSnapshot::uy, &NodeState::uy},
+    {&StateSnapshot::vx, &NodeState::vx},
+    {&StateSnapshot::vy, &NodeState::vy}};
+
+inline constexpr StateArray<RigidState> kRigidStateArrays[] = {
+    {&StateSnapshot::rigid_x, &RigidState::x},
+    {&StateSnapshot::rigid_y, &RigidState::y},
+    {&StateSnapshot::rigid_theta, &RigidState::theta},
+    {&StateSnapshot::rigid_vx, &RigidState::vx},
+    {&StateSnapshot::rigid_vy, &RigidState::vy},
+    {&StateSnapshot::rigid_omega, &RigidState::omega},
+    {&StateSnapshot::rigid_fx, &RigidState::fx},
+    {&StateSnapshot::rigid_fy, &RigidState::fy},
+    {&StateSnapshot::rigid_torque, &RigidState::torque}};
 
 // Copies the state of `solver` (its model) and of `contacts` (may be null) into `snapshot`,
 // reusing the snapshot's buffers.
