@@ -1,11 +1,12 @@
 // softgrain generate SCENARIO: build the sample exactly as `run` would (build_model, same
 // seed) and write <run folder>/sample/: sample.vtu, sample.json, sample.png, plus a table on
-// the terminal (render/sample_report.h).
+// the terminal (report/sample_report.h).
 #include <iostream>
 
 #include "command_registry.h"
 #include "core/error.h"
-#include "render/sample_report.h"
+#include "render/sample_picture.h"
+#include "report/sample_report.h"
 
 namespace sg::app {
 namespace {

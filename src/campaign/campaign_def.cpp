@@ -13,6 +13,7 @@
 
 #include "campaign/paper_coordinates.h"
 #include "campaign/slurm_settings_reader.h"
+#include "campaign/toml_text_edit.h"
 #include "core/error.h"
 #include "core/file_name.h"
 #include "core/input_file.h"
@@ -21,71 +22,7 @@ namespace sg {
 namespace {
 
 namespace fs = std::filesystem;
-
-// ---------------------------------------------------------------------------------------
-// TOML values as text
-
-// Shortest text that reads back to the same double (std::to_chars), so that a campaign value
-// 0.1 is written 0.1 and not 0.10000000000000001 as toml++'s printer does.
-std::string format_double(double v, bool as_toml_float) {
-  if (std::isnan(v)) return "nan";
-  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
-  std::string s(buffer, result.ptr);
-  if (as_toml_float && s.find_first_of(".e") == std::string::npos) s += ".0";
-  return s;
-}
-
-bool is_bare_key(std::string_view k) {
-  return !k.empty() && std::all_of(k.begin(), k.end(), [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
-  });
-}
-
-std::string printed(const toml::node& n) {
-  std::ostringstream s;
-  n.visit([&](const auto& v) { s << v; });
-  return s.str();
-}
-
-// The value as it is written in a TOML file.
-std::string toml_text(const toml::node& n) {
-  if (const auto* v = n.as_floating_point()) return format_double(v->get(), true);
-  if (const auto* v = n.as_integer()) return std::to_string(v->get());
-  if (const auto* v = n.as_boolean()) return v->get() ? "true" : "false";
-  if (const auto* a = n.as_array()) {
-    std::string s = "[";
-    for (std::size_t i = 0; i < a->size(); ++i)
-      s += (i ? ", " : "") + toml_text(*a->get(i));
-    return s + "]";
-  }
-  if (const auto* t = n.as_table()) {
-    std::string s = "{";
-    bool first = true;
-    for (const auto& [k, v] : *t) {
-      const std::string key =
-          is_bare_key(k.str()) ? std::string(k.str()) : printed(toml::value<std::string>(k.str()));
-      s += std::string(first ? " " : ", ") + key + " = " + toml_text(v);
-      first = false;
-    }
-    return s + " }";
-  }
-  return printed(n);  // strings (quoted and escaped by toml++), dates, times
-}
-
-// The value as it appears in a run id: numbers without a forced ".0", strings unquoted.
-std::string display_text(const toml::node& n) {
-  if (const auto* v = n.as_floating_point()) return format_double(v->get(), false);
-  if (const auto* v = n.as_string()) return v->get();
-  if (const auto* a = n.as_array()) {
-    std::string s;
-    for (std::size_t i = 0; i < a->size(); ++i)
-      s += (i ? "," : "") + display_text(*a->get(i));
-    return s;
-  }
-  return toml_text(n);
-}
+using namespace toml_edit;  // NOLINT: the campaign reader is written in its vocabulary
 
 // Run ids are folder names and appear in shell commands: keep them to a safe alphabet.
 std::string file_safe(std::string s) {
@@ -94,25 +31,6 @@ std::string file_safe(std::string s) {
         std::string_view("._+-,").find(c) == std::string_view::npos)
       c = '-';
   return s;
-}
-
-std::string kind(const toml::node& n) {
-  switch (n.type()) {
-    case toml::node_type::floating_point:
-      return "a number";
-    case toml::node_type::integer:
-      return "an integer";
-    case toml::node_type::string:
-      return "a string";
-    case toml::node_type::boolean:
-      return "a boolean";
-    case toml::node_type::array:
-      return "an array";
-    case toml::node_type::table:
-      return "a table";
-    default:
-      return "a date or time";
-  }
 }
 
 // ---------------------------------------------------------------------------------------
@@ -125,69 +43,6 @@ std::string kind(const toml::node& n) {
 
 std::size_t line_of(const toml::node& n) {
   return n.source().begin.line;
-}
-
-// ---------------------------------------------------------------------------------------
-// Dotted paths into a TOML document
-
-std::vector<std::string> split_key(const std::string& key) {
-  std::vector<std::string> parts;
-  std::string part;
-  std::istringstream s(key);
-  while (std::getline(s, part, '.'))
-    parts.push_back(part);
-  if (!key.empty() && key.back() == '.') parts.emplace_back();
-  return parts;
-}
-
-struct Resolved {
-  const toml::node* node = nullptr;
-  std::string error;  // why the key does not exist
-};
-
-Resolved resolve(const toml::table& root, const std::string& key) {
-  const toml::node* node = &root;
-  std::string walked;
-  for (const std::string& part : split_key(key)) {
-    if (part.empty()) return {nullptr, "is not a valid dotted key (empty component)"};
-    const std::string here = walked.empty() ? part : walked + "." + part;
-    if (const auto* t = node->as_table()) {
-      node = t->get(part);
-      if (!node) return {nullptr, "has no '" + here + "'"};
-    } else if (const auto* a = node->as_array()) {
-      if (!std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; }))
-        return {nullptr, "has an array at '" + walked + "': expected an index 0.." +
-                             std::to_string(a->size()) + " after it, got '" + part + "'"};
-      const std::size_t index = std::stoul(part);
-      if (index >= a->size())
-        return {nullptr, "has no '" + here + "' ('" + walked + "' has " +
-                             std::to_string(a->size()) + " entries)"};
-      node = a->get(index);
-    } else {
-      return {nullptr, "has " + kind(*node) + " at '" + walked + "', not a table or an array"};
-    }
-    walked = here;
-  }
-  return {node, ""};
-}
-
-// Sets `key` (which exists) to the value written `text`: the slow, layout-losing way, used
-// only when the base scenario's layout defeats in-place editing (see patch_scenario).
-void assign(toml::table& root, const std::string& key, const std::string& text) {
-  toml::table parsed = toml::parse("v = " + text);
-  const std::vector<std::string> parts = split_key(key);
-  std::string parent_key;
-  for (std::size_t i = 0; i + 1 < parts.size(); ++i)
-    parent_key += (i ? "." : "") + parts[i];
-  toml::node* parent =
-      parent_key.empty() ? &root : const_cast<toml::node*>(resolve(root, parent_key).node);
-  SG_ASSERT(parent, "key '" << key << "' was resolved before");
-  parsed.get("v")->visit([&](const auto& value) {
-    if (auto* t = parent->as_table())
-      t->insert_or_assign(parts.back(), value);
-    else if (auto* a = parent->as_array())
-      a->replace(a->cbegin() + static_cast<std::ptrdiff_t>(std::stoul(parts.back())), value);
-  });
 }
 
 // The text of `replacement` to put where the base scenario has `base`, after checking that
@@ -206,63 +61,6 @@ std::string replacement_text(const toml::node& base, const toml::node& replaceme
 // ---------------------------------------------------------------------------------------
 // Writing a run's scenario
 
-struct Edit {
-  std::size_t begin = 0, end = 0;  // byte offsets in the base text, [begin, end)
-  std::string text;
-};
-
-// Byte offsets of (line, column) positions, both 1-based, columns counted in code points as
-// toml++ counts them.
-class TextPositions {
- public:
-  explicit TextPositions(const std::string& text) : text_(text) {
-    line_starts_.push_back(0);
-    for (std::size_t i = 0; i < text.size(); ++i)
-      if (text[i] == '\n') line_starts_.push_back(i + 1);
-  }
-  std::size_t offset(std::size_t line, std::size_t column) const {
-    std::size_t at = line_starts_.at(line - 1);
-    for (std::size_t c = 1; c < column && at < text_.size(); ++c) {
-      ++at;  // past the lead byte, then past the UTF-8 continuation bytes
-      while (at < text_.size() && (static_cast<unsigned char>(text_[at]) & 0xC0) == 0x80)
-        ++at;
-    }
-    return at;
-  }
-  std::size_t line_end(std::size_t line) const {
-    return line < line_starts_.size() ? line_starts_[line] : text_.size();
-  }
-  std::size_t line_count() const { return line_starts_.size(); }
-
- private:
-  const std::string& text_;
-  std::vector<std::size_t> line_starts_;
-};
-
-Edit replace_node(const TextPositions& positions, const toml::node& n, std::string text) {
-  const auto& s = n.source();
-  return {positions.offset(s.begin.line, s.begin.column),
-          positions.offset(s.end.line, s.end.column), std::move(text)};
-}
-
-std::string apply_edits(const std::string& text, std::vector<Edit> edits) {
-  std::sort(edits.begin(), edits.end(),
-            [](const Edit& a, const Edit& b) { return a.begin > b.begin; });
-  std::string out = text;
-  std::size_t limit = text.size();
-  for (const Edit& e : edits) {
-    SG_VERIFY(e.end <= limit, "two varied keys overlap in the base scenario text");
-    out.replace(e.begin, e.end - e.begin, e.text);
-    limit = e.begin;
-  }
-  return out;
-}
-
-bool has_value(const toml::table& root, const std::string& key, const std::string& text) {
-  const Resolved r = resolve(root, key);
-  return r.node && toml_text(*r.node) == text;
-}
-
 struct ScenarioBase {
   fs::path file;
   std::string text;
@@ -271,15 +69,6 @@ struct ScenarioBase {
   // resumed campaign compares it with the run folder's scenario.toml).
   std::string as_written;
 };
-
-// A TOML basic string; toml++'s printer prefers 'literal' strings, which would stand out in a
-// scenario file written with "double quotes".
-std::string quoted(const std::string& s) {
-  const bool plain = std::all_of(s.begin(), s.end(), [](char c) {
-    return c != '"' && c != '\\' && static_cast<unsigned char>(c) >= 0x20;
-  });
-  return plain ? "\"" + s + "\"" : printed(toml::value<std::string>(s));
-}
 
 // The (key, TOML text) pairs a run sets in the scenario: its varied keys, and for varied
 // paper coordinates the physical keys they set (campaign/paper_coordinates.h).

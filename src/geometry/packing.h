@@ -1,7 +1,6 @@
 #pragma once
-// Sample generation: a grain population (shape laws, mixtures by number fraction, each
-// grain rigid or deformable) and its placement without overlap in a rectangular box or a
-// periodic strip, compacted along -y.
+// Sample generation, placement: grains (geometry/grain_population.h) placed without overlap
+// in a rectangular box or a periodic strip, compacted along -y.
 //
 // Placement, in three steps (all randomness from one seeded engine, see
 // size_distribution.h, so a seed gives the same sample everywhere):
@@ -15,7 +14,8 @@
 //     (a straight "drop to first contact" pass was tried first: it builds a ballistic
 //     deposit near 0.49 that the annealing then only slowly repairs);
 //  3. verification: every pair of contours, periodic images included, is tested exactly
-//     (edge intersections and containment), not only their bounding circles.
+//     (edge intersections and containment, geometry/contour_gap.h), not only their bounding
+//     circles.
 // Bounding circles and inscribed circles about the centroid settle most pair tests
 // without touching the contours; the exact test runs only in the thin shell between them.
 //
@@ -23,77 +23,14 @@
 // discs but packs elongated grains as if they were their bounding discs (an ellipse of
 // aspect 2 fills half of its circle) and leaves overlaps to be removed afterwards.
 #include <cstdint>
-#include <numbers>
-#include <string>
 #include <vector>
 
-#include "geometry/fourier_shape.h"
+#include "geometry/contour_gap.h"
+#include "geometry/grain_population.h"
 #include "geometry/polygon.h"
 #include "geometry/size_distribution.h"
 
 namespace sg {
-
-// ---- Grain population -----------------------------------------------------------------
-
-enum class GrainShapeKind { disc, ellipse, fourier };
-
-// One shape law. Lengths are full lengths (diameters, axis lengths), not radii.
-struct GrainShapeDef {
-  GrainShapeKind kind = GrainShapeKind::disc;
-  // disc: the diameter; fourier: twice the mean radius r_mean. Paper 001: [0.85, 1.15].
-  SizeRangeDef diameter{0.85, 1.15, SizeLaw::uniform};
-  // ellipse: long and short axis lengths, drawn independently (paper 003: 1-2 and 0.6-1.2
-  // µm); when the ranges overlap and the short draw exceeds the long one, they are swapped.
-  SizeRangeDef major_axis{1.0, 2.0, SizeLaw::uniform};
-  SizeRangeDef minor_axis{0.6, 1.2, SizeLaw::uniform};
-  // ellipse: angle of the long axis to +x (rad), uniform in [min, max).
-  double orientation_min = 0.0;
-  double orientation_max = std::numbers::pi;
-  // fourier: the descriptor spectrum (fourier_shape.h).
-  FourierSpectrumDef spectrum;
-  // Contour vertex spacing (length): the boundary node spacing of a deformable grain.
-  double contour_spacing = 0.1;
-};
-
-// One component of a mixture.
-struct GrainComponentDef {
-  std::string name = "grains";
-  GrainShapeDef shape;
-  double number_fraction = 1.0;  // relative weight; fractions are normalized over the mixture
-  bool rigid = false;            // rigid (3 DOFs) or deformable (meshfree)
-  std::string material = "default";
-};
-
-struct MixtureDef {
-  std::vector<GrainComponentDef> components;
-};
-
-// A typical grain size of a mixture (length): the number-weighted mean of the components' mid
-// sizes (disc or Fourier diameter, ellipse short axis). Sets packing clearances. Throws
-// sg::Error naming `what` when the fractions sum to zero.
-double mixture_grain_size(const std::vector<GrainComponentDef>& components,
-                          const std::string& what);
-
-// A generated grain, in its local frame (centroid at the origin).
-struct GrainDef {
-  Polygon contour;               // CCW, simple, centroid at (0, 0)
-  double bounding_radius = 0.0;  // max |vertex|
-  double size = 0.0;             // disc: diameter; ellipse: long axis; fourier: 2 r_mean
-  int component = 0;             // index in MixtureDef::components
-  bool rigid = false;
-  std::string material;
-};
-
-// One contour from a shape law (CCW, centred on the origin of its polar/parametric frame);
-// `size` receives the drawn size (see GrainDef::size).
-Polygon sample_grain_contour(const GrainShapeDef& shape, RandomEngine& engine, double& size);
-
-// `count` grains. Component counts follow the number fractions exactly up to rounding
-// (largest-remainder rounding, so they sum to `count`); the components are then shuffled
-// so that consecutive grains are not sorted by component.
-std::vector<GrainDef> generate_grains(const MixtureDef& mixture, int count, std::uint64_t seed);
-
-// ---- Placement --------------------------------------------------------------------------
 
 enum class ContainerKind {
   box,             // [x_min, x_max] x [y_min, y_max], four walls
@@ -145,9 +82,5 @@ PackingResult pack_grains(const std::vector<Polygon>& local_contours, const Pack
                           std::uint64_t seed);
 PackingResult pack_grains(const std::vector<GrainDef>& grains, const PackingDef& def,
                           std::uint64_t seed);
-
-// Whether two closed contours overlap: an edge of one crosses or touches an edge of the
-// other, or one lies inside the other.
-bool contours_overlap(const Polygon& a, const Polygon& b);
 
 }  // namespace sg

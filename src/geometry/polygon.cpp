@@ -109,6 +109,16 @@ bool is_self_intersecting(const Polygon& p) {
   return false;
 }
 
+double center_on_centroid(Polygon& p) {
+  const Vec2 c = centroid(p);
+  double radius = 0.0;
+  for (Vec2& v : p) {
+    v -= c;
+    radius = std::max(radius, v.norm());
+  }
+  return radius;
+}
+
 double distance_to_contour(const Polygon& p, const Vec2& point) {
   double best = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < p.size(); ++i)

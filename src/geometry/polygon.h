@@ -20,6 +20,9 @@ bool is_counter_clockwise(const Polygon& p);
 bool contains(const Polygon& p, const Vec2& point);
 // Whether any two non-adjacent edges intersect (O(n^2): contours have ~100 vertices).
 bool is_self_intersecting(const Polygon& p);
+// Translates the contour so that its centroid is the origin; returns its bounding radius about
+// the centroid (the largest |vertex|).
+double center_on_centroid(Polygon& p);
 // Smallest distance from `point` to the contour.
 double distance_to_contour(const Polygon& p, const Vec2& point);
 

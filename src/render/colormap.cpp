@@ -31,6 +31,32 @@ Rgb viridis(double t) {
   return {a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]), a[2] + f * (b[2] - a[2])};
 }
 
+// Moreland's cool-warm diverging map (K. Moreland, "Diverging Color Maps for Scientific
+// Visualization", ISVC 2009), his table sampled every 1/8: blue -> light grey -> red, equal
+// lightness on both sides, so C = -0.9 and C = +0.9 look equally strong.
+Rgb cool_warm(double t) {
+  static constexpr std::array<std::array<double, 3>, 9> kTable = {{
+      {59, 76, 192},
+      {98, 130, 234},
+      {141, 176, 254},
+      {184, 208, 249},
+      {221, 221, 221},
+      {245, 196, 173},
+      {244, 154, 123},
+      {222, 96, 77},
+      {180, 4, 38},
+  }};
+  if (std::isnan(t)) return {0.45, 0.45, 0.45};  // undefined: darker than the midpoint
+  t = std::fmin(1.0, std::fmax(0.0, t));
+  const double x = t * 8.0;
+  const int i = std::min(7, static_cast<int>(x));
+  const double f = x - i;
+  const auto& a = kTable[static_cast<std::size_t>(i)];
+  const auto& b = kTable[static_cast<std::size_t>(i + 1)];
+  return {((1 - f) * a[0] + f * b[0]) / 255.0, ((1 - f) * a[1] + f * b[1]) / 255.0,
+          ((1 - f) * a[2] + f * b[2]) / 255.0};
+}
+
 Rgb category_colour(int k) {
   static constexpr std::array<std::array<int, 3>, 10> kTableau = {{
       {78, 121, 167},

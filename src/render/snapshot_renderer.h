@@ -15,10 +15,14 @@
 // percentiles with robust_range). Periodic runs are
 // drawn over one period, bodies crossing the seam wrapped to both sides.
 //
+// The parts: series_extent.h (the box and the colour range), picture_layout.h (world to
+// pixels), frame_drawing.h (the bodies), frame_decorations.h (title, scale and colour bars),
+// frame_picture.h (the PNG file), colormap.h, movie.h (ffmpeg).
+//
 // field "coherence": each grain filled flat with the coherence C of paper 002 eq. 5 at its
 // centre (bilinear between the grid nodes around it), computed from the grain snapshot
 // grains/NNNNNN.csv that has the picture's number, with the grid and parameters of
-// `softgrain analyze` (render/coherence_frames.h). Diverging colour map (Moreland's
+// `softgrain analyze` (analysis/coherence_frames.h). Diverging colour map (Moreland's
 // cool-warm), fixed range [-1, 1]: red counter-clockwise, blue clockwise (with the shear);
 // dark grey where C is undefined (a pore, the layer's edge) and for non-grain bodies.
 //
@@ -27,7 +31,6 @@
 // rate of contacts/NNNNNN.vtu with the same map (render/contact_outlines.h, io/contact_rate.h):
 // deformation inside grains and between them in one picture. The contact rates count in the
 // colour range. A run without contacts/ draws the grains only.
-#include <cstdint>
 #include <filesystem>
 #include <limits>
 #include <optional>
@@ -76,27 +79,9 @@ const std::vector<std::string>& render_field_choices();
 // coherence).
 bool field_defined_on_rigid(const std::string& field);
 
-// The range of `field` over the coloured points of every mesh (see above). Throws
-// sg::Error if no point is coloured by it.
-std::pair<double, double> field_range(const std::vector<VtuMesh>& meshes, const std::string& field);
-
 // Reads RUN_DIR/fields.pvd and its snapshots; writes RUN_DIR/render/<field>_NNNNNN.png
 // (NNNNNN the snapshot's number) and, if possible, RUN_DIR/render/<field>.mp4. Throws
 // sg::Error naming the file for a missing or malformed input, or a bad option.
 RenderResult render_run(const std::filesystem::path& run_dir, const RenderOptions& options);
-
-// Width and height of a PNG file, read back with Cairo (for tests and checks).
-std::pair<int, int> png_size(const std::filesystem::path& png);
-
-// The pixels of a PNG file, row after row from the top, each 0xRRGGBB (for tests and checks).
-struct PngPixels {
-  int width = 0, height = 0;
-  std::vector<std::uint32_t> rgb;
-  std::uint32_t at(int x, int y) const {
-    return rgb[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-               static_cast<std::size_t>(x)];
-  }
-};
-PngPixels png_pixels(const std::filesystem::path& png);
 
 }  // namespace sg

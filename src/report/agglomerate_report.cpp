@@ -5,7 +5,7 @@
 #include "analysis/structure_cylinders.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
-#include "render/coherence_frames.h"
+#include "analysis/coherence_frames.h"
 #include "report/analyze_steps.h"
 
 namespace sg::report {

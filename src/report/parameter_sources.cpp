@@ -1,6 +1,6 @@
 #include <cmath>
 
-#include "render/coherence_frames.h"
+#include "analysis/coherence_frames.h"
 #include "report/analyze_steps.h"
 
 namespace sg::report {

@@ -12,10 +12,11 @@
 #include <numbers>
 #include <sstream>
 
+#include "analysis/coherence_frames.h"
 #include "core/error.h"
 #include "core/version.h"
-#include "render/coherence_frames.h"
 #include "render/plot_runner.h"
+#include "render/png_reader.h"
 #include "render/snapshot_renderer.h"
 #include "render/vtu_reader.h"
 #include "report/analyze_run.h"

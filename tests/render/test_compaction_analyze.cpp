@@ -13,6 +13,7 @@
 #include "analysis/run_csv_table.h"
 #include "analysis/series.h"
 #include "render/plot_runner.h"
+#include "render/png_reader.h"
 #include "render/snapshot_renderer.h"
 #include "render/vtu_reader.h"
 #include "report/analyze_run.h"

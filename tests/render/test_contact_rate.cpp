@@ -16,6 +16,7 @@
 #include "io/vtk_writer.h"
 #include "model/kinematics.h"
 #include "render/colormap.h"
+#include "render/png_reader.h"
 #include "render/snapshot_renderer.h"
 #include "render/vtu_reader.h"
 #include "scenes/contact_scenes.h"

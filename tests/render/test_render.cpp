@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "render/png_reader.h"
 #include "render/snapshot_renderer.h"
 #include "render/vtu_reader.h"
 #include "report/analyze_run.h"

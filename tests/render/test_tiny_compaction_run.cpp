@@ -4,7 +4,7 @@
 #include <string>
 #include <system_error>
 
-#include "render/sample_report.h"
+#include "report/sample_report.h"
 #include "run/run.h"
 #include "scenario/scenario.h"
 #include "scenes/scenario_files.h"

@@ -1,6 +1,7 @@
-// softgrain generate (render/sample_report.h): the sample folder of a tiny compaction box and
-// of a tiny shear cell, measured on the model build_model gives (the one run simulates).
-// This file includes the scenario layer (not analysis/velocity_grid.h: see run_folder.h).
+// softgrain generate (report/sample_report.h, render/sample_picture.h): the sample folder of a tiny
+// compaction box and of a tiny shear cell, measured on the model build_model gives (the one run
+// simulates). This file includes the scenario layer (not analysis/velocity_grid.h: see
+// run_folder.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,8 +9,9 @@
 #include <nlohmann/json.hpp>
 
 #include "geometry/shapes.h"
-#include "render/sample_report.h"
-#include "render/snapshot_renderer.h"
+#include "render/png_reader.h"
+#include "render/sample_picture.h"
+#include "report/sample_report.h"
 #include "scenes/scenario_files.h"
 #include "scenes/tiny_scenario.h"
 

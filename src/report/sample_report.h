@@ -4,7 +4,7 @@
 // grains, first bodies, nodes, quadrature):
 //   <run folder>/sample/sample.vtu   the bodies at t = 0 (io/vtk_writer.h)
 //   <run folder>/sample/sample.json  the measurements below (format version 1), atomic
-//   <run folder>/sample/sample.png   a picture of the sample (render/snapshot_renderer.h)
+//   <run folder>/sample/sample.png   a picture of the sample (render/sample_picture.h)
 //
 // Measured, not echoed: counts come from the Model; the solid fraction from the grains' contour
 // areas and the container read off the built walls or first bodies; the size moments from the
@@ -13,7 +13,7 @@
 // the requested law has exactly, and their Kolmogorov-Smirnov distance to the law; the
 // roughness RMS and the spectral slope (with the Hurst exponent it implies) from the built
 // first-body contours; the smallest gap from the exact contours of every pair of bodies
-// (periodic images included).
+// (periodic images included; geometry/contour_gap.h).
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -95,10 +95,5 @@ std::string sample_table(const SampleReport& report);
 
 // Writes <dir>/sample.vtu and <dir>/sample.json (atomically).
 void write_sample(const Model& model, const SampleReport& report, const std::filesystem::path& dir);
-
-// Draws <dir>/sample.vtu (written first) into <dir>/sample.png with the render stage (one
-// colour per body); returns the picture's path.
-std::filesystem::path draw_sample_picture(const Model& model, const std::filesystem::path& dir,
-                                          const std::string& title);
 
 }  // namespace sg

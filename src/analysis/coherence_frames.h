@@ -1,10 +1,10 @@
 #pragma once
 // The coherence analysis of paper 002 §2.2 set up for a run folder's grain snapshots:
 // one parameter set and one grid for a whole sequence, shared by `softgrain analyze`
-// (agglomerates) and `softgrain render --field coherence` (pictures), so that a picture
-// shows the field the statistics are computed from. (The grid's y span follows the
-// snapshots given: analyze uses the window's, render all frames', so values near the
-// layer's edges may differ a little.)
+// (agglomerates) and `softgrain render --field coherence` (pictures, which show the C of
+// grain_coherence below), so that a picture shows the field the statistics are computed from. (The
+// grid's y span follows the snapshots given: analyze uses the window's, render all frames', so
+// values near the layer's edges may differ a little.)
 //
 // Parameters from the mean grain diameter d (paper 002 §2.2): grid spacing d, MLS support
 // 2 d (velocity_grid.h), coherence radius R = 2.5 d ("two to three times the typical size
@@ -46,5 +46,18 @@ double coherence_at(const CoherenceField& field, const Vec2& p);
 
 // Mean equivalent diameter 2 sqrt(A/pi) of a snapshot's grains (NaN if empty).
 double mean_equivalent_diameter(const GrainSnapshot& snapshot);
+
+// The coherence C at each grain's centre (coherence_at), per snapshot, indexed by body number
+// (the grain rows' body column; NaN for numbers without a grain row and where C is
+// undefined), on one setup for the whole sequence (choose_coherence_setup over every
+// snapshot, no given layer): what `softgrain render --field coherence` colours the grains by.
+struct GrainCoherence {
+  std::vector<std::vector<double>> by_body;  // one per snapshot
+  std::string note;                          // the setup's note
+};
+// Throws sg::Error if the diameter is not positive, there is no grain, or a grain row's body is
+// not a body number.
+GrainCoherence grain_coherence(std::span<const GrainSnapshot> snapshots, double mean_diameter,
+                               std::optional<std::pair<double, double>> periodic);
 
 }  // namespace sg

@@ -1,4 +1,4 @@
-#include "render/sample_report.h"
+#include "report/sample_report.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,13 +11,14 @@
 
 #include "contact/contact_system.h"
 #include "core/error.h"
+#include "geometry/bounding_box.h"
+#include "geometry/contour_gap.h"
 #include "geometry/packing.h"
 #include "geometry/rough_surface.h"
 #include "geometry/size_distribution.h"
 #include "io/atomic_file.h"
 #include "io/vtk_writer.h"
 #include "model/kinematics.h"
-#include "render/snapshot_renderer.h"
 #include "solver/mass_scaling.h"
 #include "solver/stable_time_step.h"
 
@@ -60,46 +61,6 @@ double std_of(const std::vector<double>& v) {
   for (double x : v)
     sum += (x - m) * (x - m);
   return v.empty() ? 0.0 : std::sqrt(sum / static_cast<double>(v.size()));
-}
-
-struct Box {
-  Vec2 lo, hi;
-};
-
-Box bounds(const Polygon& p) {
-  Box b{p.front(), p.front()};
-  for (const Vec2& v : p) {
-    b.lo = b.lo.cwiseMin(v);
-    b.hi = b.hi.cwiseMax(v);
-  }
-  return b;
-}
-
-// The segments of a contour: closed, or open with the last point joined to the first
-// shifted by `closing_shift` (a periodic strip).
-std::vector<std::pair<Vec2, Vec2>> segments_of(const Polygon& p, bool open, double closing_shift) {
-  std::vector<std::pair<Vec2, Vec2>> s;
-  s.reserve(p.size());
-  for (std::size_t i = 0; i + 1 < p.size(); ++i)
-    s.emplace_back(p[i], p[i + 1]);
-  s.emplace_back(p.back(), open ? p.front() + Vec2(closing_shift, 0.0) : p.front());
-  return s;
-}
-
-double point_segments_distance(const Vec2& q, const std::vector<std::pair<Vec2, Vec2>>& segs) {
-  double best = std::numeric_limits<double>::infinity();
-  for (const auto& [a, b] : segs) {
-    best = std::min(best, project_on_segment(q, a, b).distance);
-  }
-  return best;
-}
-
-bool any_crossing(const std::vector<std::pair<Vec2, Vec2>>& sa,
-                  const std::vector<std::pair<Vec2, Vec2>>& sb) {
-  for (const auto& [a0, a1] : sa)
-    for (const auto& [b0, b1] : sb)
-      if (segments_intersect(a0, a1, b0, b1)) return true;
-  return false;
 }
 
 // The spectral slope of a first body's rough surface (its open contour, one period [x0,
@@ -150,12 +111,12 @@ void measure_gaps(const Model& model, SampleReport& r) {
   compute_contour_positions(model, positions);
   const std::size_t n = model.bodies.size();
   std::vector<Polygon> contours(n);
-  std::vector<Box> boxes(n);
+  std::vector<BoundingBox> boxes(n);
   std::vector<double> sizes;
   for (std::size_t b = 0; b < n; ++b) {
     contours[b] = body_contour(model, positions, b);
-    boxes[b] = bounds(contours[b]);
-    if (!model.bodies[b].open_contour) sizes.push_back((boxes[b].hi - boxes[b].lo).maxCoeff());
+    boxes[b] = bounding_box(contours[b]);
+    if (!model.bodies[b].open_contour) sizes.push_back(boxes[b].size().maxCoeff());
   }
   // Pairs whose boxes are farther apart than a typical body size cannot hold the smallest
   // gap of a packing (its grains touch to within a fraction of their size).
@@ -167,49 +128,25 @@ void measure_gaps(const Model& model, SampleReport& r) {
   r.smallest_gap = std::numeric_limits<double>::infinity();
   r.overlapping_pairs = 0;
   double deepest = 0.0;
-  std::vector<std::vector<std::pair<Vec2, Vec2>>> segs(n);
-  for (std::size_t b = 0; b < n; ++b)
-    segs[b] =
-        segments_of(contours[b], model.bodies[b].open_contour, model.bodies[b].closing_shift_x);
+  const auto edges = [&](std::size_t b) {
+    return ContourEdges{contours[b], model.bodies[b].open_contour, model.bodies[b].closing_shift_x};
+  };
   for (std::size_t a = 0; a < n; ++a) {
     for (std::size_t b = a + 1; b < n; ++b) {
       bool overlap = false;
       for (double shift : shifts) {
         const Vec2 d(shift, 0.0);
-        const Box& A = boxes[a];
-        const Box B{boxes[b].lo + d, boxes[b].hi + d};
-        if (A.lo.x() > B.hi.x() + reach || B.lo.x() > A.hi.x() + reach ||
-            A.lo.y() > B.hi.y() + reach || B.lo.y() > A.hi.y() + reach)
-          continue;
-        std::vector<std::pair<Vec2, Vec2>> sb = segs[b];
-        for (auto& [p, q] : sb) {
-          p += d;
-          q += d;
-        }
-        Polygon pb = contours[b];
-        for (Vec2& v : pb)
-          v += d;
+        if (boxes_apart(boxes[a], boxes[b].shifted(d), reach)) continue;
         // Exact: crossing edges, or a closed contour inside the other (containment).
-        bool inside = false;
         const bool closed = !model.bodies[a].open_contour && !model.bodies[b].open_contour;
-        if (closed) inside = contains(contours[a], pb.front()) || contains(pb, contours[a].front());
-        if (inside || any_crossing(segs[a], sb)) {
+        const bool inside = closed && contour_inside_other(contours[a], contours[b], d);
+        if (inside || contour_edges_interfere(edges(a), edges(b), d, 0.0)) {
           overlap = true;
           // Depth: the farthest contour point of one body inside the other (closed contours).
-          if (closed) {
-            for (const Vec2& v : pb)
-              if (contains(contours[a], v))
-                deepest = std::max(deepest, distance_to_contour(contours[a], v));
-            for (const Vec2& v : contours[a])
-              if (contains(pb, v)) deepest = std::max(deepest, distance_to_contour(pb, v));
-          }
+          if (closed) deepest = std::max(deepest, overlap_depth(contours[a], contours[b], d));
           continue;
         }
-        double gap = std::numeric_limits<double>::infinity();
-        for (const Vec2& v : contours[a])
-          gap = std::min(gap, point_segments_distance(v, sb));
-        for (const Vec2& v : pb)
-          gap = std::min(gap, point_segments_distance(v, segs[a]));
+        const double gap = contour_gap(edges(a), edges(b), d);
         if (gap < r.smallest_gap) {
           r.smallest_gap = gap;
           r.gap_body_a = model.bodies[a].name;
@@ -274,8 +211,10 @@ void measure_container(const ScenarioDef& scenario, const Model& model,
     return body_contour(model, positions, static_cast<std::size_t>(b));
   };
   if (scenario.compaction_box) {
-    const Box bottom = bounds(contour_of("bottom")), left = bounds(contour_of("left"));
-    const Box right = bounds(contour_of("right")), lid = bounds(contour_of("lid"));
+    const BoundingBox bottom = bounding_box(contour_of("bottom"));
+    const BoundingBox left = bounding_box(contour_of("left"));
+    const BoundingBox right = bounding_box(contour_of("right"));
+    const BoundingBox lid = bounding_box(contour_of("lid"));
     r.container_area = (right.lo.x() - left.hi.x()) * (lid.lo.y() - bottom.hi.y());
   } else if (scenario.shear_cell) {
     const Polygon bottom = contour_of("bottom"), top = contour_of("top");
@@ -344,8 +283,8 @@ void measure_sizes(const ScenarioDef& scenario, const Model& model,
                    : ellipse                              ? "long axis"
                                                           : "2 r_mean";
       // Ellipses: the long axis is the major-axis draw unless the ranges overlap and the
-      // draws were swapped (packing.h), so the law's moments and KS distance are exact only
-      // without overlap.
+      // draws were swapped (grain_population.h), so the law's moments and KS distance are
+      // exact only without overlap.
       const SizeRangeDef& law = ellipse ? def.shape.major_axis : def.shape.diameter;
       s.count = static_cast<int>(drawn[c].size());
       s.requested_mean = size_mean(law);
@@ -536,37 +475,6 @@ void write_sample(const Model& model, const SampleReport& report,
   std::filesystem::create_directories(dir);
   write_vtu_snapshot(model, dir / "sample.vtu");
   write_file_atomically(dir / "sample.json", sample_json(report));
-}
-
-std::filesystem::path draw_sample_picture(const Model& model, const std::filesystem::path& dir,
-                                          const std::string& title) {
-  namespace fs = std::filesystem;
-  // render_run draws a run folder's fields.pvd: a one-entry index for the duration of the call.
-  const fs::path pvd = dir / "fields.pvd";
-  const fs::path render_dir = dir / "render";
-  SG_VERIFY(!fs::exists(render_dir),
-            "'" << render_dir.string() << "' exists: remove it (generate draws its picture there)");
-  struct Cleanup {
-    fs::path pvd, render_dir;
-    ~Cleanup() {
-      std::error_code ignored;
-      fs::remove(pvd, ignored);
-      fs::remove_all(render_dir, ignored);
-    }
-  } cleanup{pvd, render_dir};
-  PvdCollection(pvd).add(0.0, "sample.vtu");
-  RenderOptions options;
-  options.field = "body";  // one colour per body: rigid and deformable grains alike
-  options.last_frame_only = true;
-  options.movie = false;
-  options.title = title;
-  if (model.periodic_x) options.periodic = std::make_pair(model.x_min, model.x_max);
-  const RenderResult result = render_run(dir, options);
-  SG_VERIFY(result.images.size() == 1,
-            "sample picture: render drew " << result.images.size() << " images, expected 1");
-  const fs::path png = dir / "sample.png";
-  fs::rename(result.images.front(), png);
-  return png;
 }
 
 }  // namespace sg

@@ -1,11 +1,13 @@
-#include "render/coherence_frames.h"
+#include "analysis/coherence_frames.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <sstream>
+#include <string>
 
+#include "analysis/velocity_grid.h"
 #include "core/error.h"
 
 namespace sg {
@@ -91,6 +93,34 @@ double mean_equivalent_diameter(const GrainSnapshot& snapshot) {
   for (double a : snapshot.area)
     sum += 2.0 * std::sqrt(a / std::numbers::pi);
   return sum / static_cast<double>(snapshot.size());
+}
+
+GrainCoherence grain_coherence(std::span<const GrainSnapshot> snapshots, double mean_diameter,
+                               std::optional<std::pair<double, double>> periodic) {
+  const CoherenceSetup setup = choose_coherence_setup(snapshots, mean_diameter, periodic, {});
+  GrainCoherence out;
+  out.note = setup.note;
+  for (const GrainSnapshot& snap : snapshots) {
+    const CoherenceField c =
+        compute_coherence(interpolate_velocity_grid(snap, setup.grid, setup.params.interpolation),
+                          setup.params.coherence);
+    std::vector<double> by_body;
+    for (std::size_t g = 0; g < snap.size(); ++g) {
+      int id = -1;
+      try {
+        id = std::stoi(snap.body[g]);
+      } catch (const std::exception&) {
+        SG_THROW("coherence at the grains: grain snapshot at t = "
+                 << snap.time << ": body '" << snap.body[g] << "' is not a body number");
+      }
+      SG_VERIFY(id >= 0 && id < (1 << 24), "coherence at the grains: body number " << id);
+      if (by_body.size() <= static_cast<std::size_t>(id))
+        by_body.resize(static_cast<std::size_t>(id) + 1, std::numeric_limits<double>::quiet_NaN());
+      by_body[static_cast<std::size_t>(id)] = coherence_at(c, snap.position[g]);
+    }
+    out.by_body.push_back(std::move(by_body));
+  }
+  return out;
 }
 
 }  // namespace sg

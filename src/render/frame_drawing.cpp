@@ -1,0 +1,224 @@
+#include "render/frame_drawing.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <span>
+#include <unordered_map>
+
+#include "render/contact_outlines.h"
+#include "render/snapshot_renderer.h"
+
+namespace sg {
+namespace {
+
+// The x shifts (multiples of the period) at which a cell spanning [x0, x1] shows in the
+// period box.
+std::vector<double> shifts_for(const Style& s, double x0, double x1) {
+  if (!s.periodic) return {0.0};
+  const double a = s.periodic->first, b = s.periodic->second, L = b - a;
+  std::vector<double> out;
+  for (int k = -1; k <= 1; ++k)
+    if (x1 + k * L > a && x0 + k * L < b) out.push_back(k * L);
+  return out;
+}
+
+// Triangle vertices, unwrapped to the periodic image nearest the first vertex (the writer
+// may wrap each node into the period on its own).
+std::array<Vec2, 3> triangle_points(const VtuMesh& m, std::span<const int> cell, const Style& s) {
+  std::array<Vec2, 3> p;
+  for (int k = 0; k < 3; ++k)
+    p[static_cast<std::size_t>(k)] =
+        m.points[static_cast<std::size_t>(cell[static_cast<std::size_t>(k)])];
+  if (s.periodic) {
+    const double L = s.periodic->second - s.periodic->first;
+    for (int k = 1; k < 3; ++k) {
+      Vec2& q = p[static_cast<std::size_t>(k)];
+      q.x() -= L * std::round((q.x() - p[0].x()) / L);
+    }
+  }
+  return p;
+}
+
+// Rigid bodies: filled polygons, coloured by the field where it is defined on them.
+void draw_rigid_bodies(cairo_t* cr, const Layout& l, const Style& s, const VtuMesh& m,
+                       const std::vector<double>& value, const std::vector<double>& body) {
+  const bool rigid_coloured = field_defined_on_rigid(s.field);
+  for (std::size_t c = 0; c < m.cell_count(); ++c) {
+    if (m.types[c] != kVtkPolygon) continue;
+    const auto cell = m.cell(c);
+    if (cell.empty()) continue;
+    BoundingBox b;
+    double mean = 0.0;
+    for (int p : cell) {
+      b.add(m.points[static_cast<std::size_t>(p)]);
+      mean += value[static_cast<std::size_t>(p)];
+    }
+    mean /= static_cast<double>(cell.size());
+    const Rgb fill =
+        rigid_coloured
+            ? colour_of(s, s.categorical ? body[static_cast<std::size_t>(cell[0])] : mean)
+            : Rgb{0.78, 0.78, 0.78};
+    for (double shift : shifts_for(s, b.lo.x(), b.hi.x())) {
+      cairo_new_path(cr);
+      for (int p : cell) {
+        const Vec2& q = m.points[static_cast<std::size_t>(p)];
+        cairo_line_to(cr, l.px(q.x() + shift), l.py(q.y()));
+      }
+      cairo_close_path(cr);
+      cairo_set_source_rgb(cr, fill.r, fill.g, fill.b);
+      cairo_fill_preserve(cr);
+      cairo_set_source_rgba(cr, 0.15, 0.15, 0.15, 0.9);
+      cairo_set_line_width(cr, 1.0);
+      cairo_stroke(cr);
+    }
+  }
+}
+
+// Deformable grains, one flat colour per body: all its triangles as one path, so no seams
+// show between them.
+void draw_flat_grains(cairo_t* cr, const Layout& l, const Style& s, const VtuMesh& m,
+                      const std::vector<double>& body) {
+  std::unordered_map<int, std::vector<std::size_t>> by_body;
+  for (std::size_t c = 0; c < m.cell_count(); ++c)
+    if (m.types[c] == kVtkTriangle)
+      by_body[static_cast<int>(std::lround(body[static_cast<std::size_t>(m.cell(c)[0])]))]
+          .push_back(c);
+  for (const auto& [id, cells] : by_body) {
+    cairo_new_path(cr);
+    for (std::size_t c : cells) {
+      const auto p = triangle_points(m, m.cell(c), s);
+      const double x0 = std::min({p[0].x(), p[1].x(), p[2].x()});
+      const double x1 = std::max({p[0].x(), p[1].x(), p[2].x()});
+      for (double shift : shifts_for(s, x0, x1)) {
+        cairo_move_to(cr, l.px(p[0].x() + shift), l.py(p[0].y()));
+        cairo_line_to(cr, l.px(p[1].x() + shift), l.py(p[1].y()));
+        cairo_line_to(cr, l.px(p[2].x() + shift), l.py(p[2].y()));
+        cairo_close_path(cr);
+      }
+    }
+    const Rgb c = category_colour(id);
+    cairo_set_source_rgb(cr, c.r, c.g, c.b);
+    cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+    cairo_fill(cr);
+  }
+}
+
+// Deformable grains shaded by the field: one mesh-pattern patch per triangle (and per
+// periodic image).
+void draw_shaded_grains(cairo_t* cr, const Layout& l, const Style& s, const VtuMesh& m,
+                        const std::vector<double>& value) {
+  cairo_pattern_t* mesh = cairo_pattern_create_mesh();
+  bool any = false;
+  for (std::size_t c = 0; c < m.cell_count(); ++c) {
+    if (m.types[c] != kVtkTriangle) continue;
+    const auto cell = m.cell(c);
+    const auto p = triangle_points(m, cell, s);
+    const double x0 = std::min({p[0].x(), p[1].x(), p[2].x()});
+    const double x1 = std::max({p[0].x(), p[1].x(), p[2].x()});
+    for (double shift : shifts_for(s, x0, x1)) {
+      cairo_mesh_pattern_begin_patch(mesh);
+      cairo_mesh_pattern_move_to(mesh, l.px(p[0].x() + shift), l.py(p[0].y()));
+      cairo_mesh_pattern_line_to(mesh, l.px(p[1].x() + shift), l.py(p[1].y()));
+      cairo_mesh_pattern_line_to(mesh, l.px(p[2].x() + shift), l.py(p[2].y()));
+      for (unsigned k = 0; k < 3; ++k) {
+        const Rgb col = colour_of(s, value[static_cast<std::size_t>(cell[k])]);
+        cairo_mesh_pattern_set_corner_color_rgb(mesh, k, col.r, col.g, col.b);
+      }
+      cairo_mesh_pattern_end_patch(mesh);
+      any = true;
+    }
+  }
+  if (any) {
+    cairo_set_source(cr, mesh);
+    cairo_paint(cr);
+  }
+  cairo_pattern_destroy(mesh);
+}
+
+// A segment a -> b of the picture, b unwrapped to a's periodic image, at each shift it shows.
+void add_segment(cairo_t* cr, const Layout& l, const Style& s, const Vec2& a, Vec2 b) {
+  if (s.periodic) {
+    const double L = s.periodic->second - s.periodic->first;
+    b.x() -= L * std::round((b.x() - a.x()) / L);
+  }
+  for (double shift : shifts_for(s, std::min(a.x(), b.x()), std::max(a.x(), b.x()))) {
+    cairo_move_to(cr, l.px(a.x() + shift), l.py(a.y()));
+    cairo_line_to(cr, l.px(b.x() + shift), l.py(b.y()));
+  }
+}
+
+double outline_width(const Layout& l) {
+  return std::clamp(l.scale * 0.012, 0.6, 1.5);
+}
+
+// Grain outlines: triangle edges used once within a body are its boundary.
+void draw_outlines(cairo_t* cr, const Layout& l, const Style& s, const VtuMesh& m) {
+  cairo_new_path(cr);
+  for (const auto& [a, b] : boundary_edges(m, false))
+    add_segment(cr, l, s, m.points[static_cast<std::size_t>(a)],
+                m.points[static_cast<std::size_t>(b)]);
+  cairo_set_source_rgba(cr, 0.1, 0.1, 0.1, 0.75);
+  cairo_set_line_width(cr, outline_width(l));
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  cairo_stroke(cr);
+}
+
+// The contact rates on the outlines (render/contact_outlines.h): the half of each boundary
+// edge (grains and rigid bodies) at a contact's slave point, in the point's colour, wider
+// than the outline so that it reads beside the grain's own shading.
+void draw_contact_outlines(cairo_t* cr, const Layout& l, const Style& s, const VtuMesh& m,
+                           const std::vector<double>& contact_value) {
+  if (contact_value.empty()) return;
+  cairo_set_line_width(cr, std::max(2.5, 3.0 * outline_width(l)));
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+  for (const auto& [a, b] : boundary_edges(m, true)) {
+    const Vec2& pa = m.points[static_cast<std::size_t>(a)];
+    Vec2 pb = m.points[static_cast<std::size_t>(b)];
+    if (s.periodic) {
+      const double L = s.periodic->second - s.periodic->first;
+      pb.x() -= L * std::round((pb.x() - pa.x()) / L);
+    }
+    const Vec2 mid = 0.5 * (pa + pb);
+    for (const auto& [point, from] : {std::make_pair(a, pa), std::make_pair(b, pb)}) {
+      const double v = contact_value[static_cast<std::size_t>(point)];
+      if (!std::isfinite(v)) continue;
+      cairo_new_path(cr);
+      add_segment(cr, l, s, from, mid);
+      const Rgb c = colour_of(s, v);
+      cairo_set_source_rgb(cr, c.r, c.g, c.b);
+      cairo_stroke(cr);
+    }
+  }
+}
+
+}  // namespace
+
+void draw_frame(cairo_t* cr, const Layout& l, const Style& s, const Frame& f) {
+  const VtuMesh& m = *f.mesh;
+  const std::vector<double> value = point_scalar(m, s.field == "body" ? "body_id" : s.field);
+  const std::vector<double> body = point_scalar(m, "body_id");
+
+  cairo_save(cr);
+  cairo_rectangle(cr, l.plot_x0, l.plot_y0, l.plot_x1 - l.plot_x0, l.plot_y1 - l.plot_y0);
+  cairo_clip(cr);
+  if (s.periodic) {
+    // The period: a light band, so that the seam-wrapped cell reads as one.
+    const double xa = l.px(s.periodic->first), xb = l.px(s.periodic->second);
+    cairo_rectangle(cr, xa, l.py(l.world.hi.y()), xb - xa,
+                    l.py(l.world.lo.y()) - l.py(l.world.hi.y()));
+    cairo_set_source_rgb(cr, 0.965, 0.965, 0.965);
+    cairo_fill_preserve(cr);
+    cairo_clip(cr);
+  }
+  draw_rigid_bodies(cr, l, s, m, value, body);
+  if (s.categorical)
+    draw_flat_grains(cr, l, s, m, body);
+  else
+    draw_shaded_grains(cr, l, s, m, value);
+  draw_outlines(cr, l, s, m);
+  draw_contact_outlines(cr, l, s, m, f.contact_value);
+  cairo_restore(cr);
+}
+
+}  // namespace sg
