@@ -374,5 +374,59 @@ TEST(HostileCli, ResumeDropsSnapshotsDeletedSinceAndSaysSo) {
   EXPECT_NE(read_text(dir / "run.log").find("# resume: 1 of the "), std::string::npos);
 }
 
+TEST(HostileCli, AStiffnessOverMassBeyondTheArithmeticIsRefusedNamingTheMaterial) {
+  // young 1e80 over density 1e-80: the stable-step estimate overflowed and said "cannot
+  // estimate its highest frequency (got 0); is the body inverted?", naming no input.
+  const std::string text =
+      scenes::replace_once(two_discs("light"), "young = 10.0", "young = 1e80\ndensity = 1e-80");
+  const fs::path scenario = scenes::write_text_file(temp_root() / "light.toml", text);
+  const Outcome o =
+      softgrain({"run", scenario.string(), "-o", (temp_root() / "light-out").string()});
+  expect_refused(o,
+                 "light.toml:10: key 'materials[0].young': material 'soft': young 1e+80 over "
+                 "density 1e-80",
+                 "young over density");
+  EXPECT_NE(o.err.find("expected at most 1e+70"), std::string::npos) << o.err;
+  EXPECT_EQ(o.err.find("inverted"), std::string::npos) << o.err;
+}
+
+TEST(HostileCli, AHugeDriveVelocityIsRefusedNamingTheKey) {
+  // A wall driven at 1e10: the contact grid spanning its reach ended the run at step 1 with
+  // "cannot create std::vector larger than max_size()".
+  const std::string wall = R"([[walls]]
+lower_left = [-2.0, -0.7]
+upper_right = [2.0, -0.5]
+material = "soft"
+velocity = [1e10, 0.0]
+[[contact_laws]]
+materials = ["soft", "soft"]
+law = "frictionless"
+normal_stiffness = 100.0
+)";
+  const fs::path scenario =
+      scenes::write_text_file(temp_root() / "fast-wall.toml", two_discs("fast-wall") + wall);
+  const fs::path out = temp_root() / "fast-out";
+  const Outcome o = softgrain({"run", scenario.string(), "-o", out.string()});
+  expect_refused(o, "fast-wall.toml:23: key 'walls[0].velocity': wall 'wall_0': a speed of 1e+10",
+                 "wall velocity");
+  EXPECT_EQ(o.err.find("max_size"), std::string::npos) << o.err;
+  // The same in a drive table, and a thrown grain.
+  const fs::path drive = scenes::write_text_file(
+      temp_root() / "fast-drive.toml",
+      two_discs("fast-drive") + scenes::replace_once(wall, "velocity = [1e10, 0.0]",
+                                                     "drive = {y = {velocity = [[0.0, 0.0], "
+                                                     "[0.1, -1e12]]}}"));
+  expect_refused(softgrain({"run", drive.string(), "-o", out.string()}),
+                 "key 'walls[0].drive.y.velocity': wall 'wall_0': a speed of 1e+12", "drive");
+  const fs::path thrown = scenes::write_text_file(
+      temp_root() / "thrown.toml",
+      scenes::replace_once(two_discs("thrown"), "radius = 0.5\nmaterial = \"soft\"\n[[grains]]",
+                           "radius = 0.5\nmaterial = \"soft\"\nvelocity = [0.0, 1e9]\n[[grains]]"));
+  expect_refused(softgrain({"run", thrown.string(), "-o", out.string()}),
+                 "thrown.toml:15: key 'grains[0].velocity': grain 'grain_0': a speed of 1e+09",
+                 "thrown grain");
+  EXPECT_FALSE(fs::exists(out / "fast-wall" / "series.csv"));
+}
+
 }  // namespace
 }  // namespace sg
