@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "io/run_lock.h"
+#include "io/softgrain_process.h"
 #include "scenes/scenario_files.h"
 #include "test_locations.h"  // SOFTGRAIN_EXECUTABLE, SOFTGRAIN_SOURCE_DIR
 
@@ -46,49 +47,24 @@ struct Outcome {
   std::string err;  // stderr
 };
 
-// Runs `softgrain <args>` with a time limit (a hang is a failure, not a stuck test);
-// `file_size_limit` > 0 caps every file the process writes (RLIMIT_FSIZE; the write that
-// passes it fails as on a full disk).
+// Runs `softgrain <args> --threads 1` with a time limit (a hang is a failure, not a stuck
+// test); `file_size_limit` > 0 caps every file the process writes (the write that passes it
+// fails as on a full disk).
 Outcome softgrain(std::vector<std::string> args, long file_size_limit = 0,
                   std::chrono::seconds limit = std::chrono::seconds(60)) {
   static int calls = 0;
-  const fs::path err = temp_root() / ("stderr-" + std::to_string(++calls) + ".txt");
-  std::cout << std::flush;
-  std::fflush(nullptr);
-  const pid_t pid = fork();
-  if (pid == 0) {
-    if (file_size_limit > 0) {
-      signal(SIGXFSZ, SIG_IGN);  // the write fails with EFBIG instead of killing the process
-      const rlimit r{static_cast<rlim_t>(file_size_limit), static_cast<rlim_t>(file_size_limit)};
-      setrlimit(RLIMIT_FSIZE, &r);
-    }
-    freopen("/dev/null", "w", stdout);
-    freopen(err.c_str(), "w", stderr);
-    args.insert(args.begin(), SOFTGRAIN_EXECUTABLE);
-    args.push_back("--threads");
-    args.push_back("1");
-    std::vector<char*> argv;
-    for (std::string& a : args)
-      argv.push_back(a.data());
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
+  testing::SoftgrainLaunch launch;
+  launch.stderr_path = (temp_root() / ("stderr-" + std::to_string(++calls) + ".txt")).string();
+  launch.file_size_limit = file_size_limit;
+  launch.kill_after = limit;
+  args.push_back("--threads");
+  args.push_back("1");
+  const testing::SoftgrainEnd end = testing::run_softgrain_process(std::move(args), launch);
   Outcome o;
-  int status = 0;
-  const auto deadline = std::chrono::steady_clock::now() + limit;
-  while (waitpid(pid, &status, WNOHANG) == 0) {
-    if (std::chrono::steady_clock::now() >= deadline) {
-      kill(pid, SIGKILL);
-      waitpid(pid, &status, 0);
-      o.timed_out = true;
-      break;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  if (WIFEXITED(status)) o.exit_code = WEXITSTATUS(status);
-  if (WIFSIGNALED(status)) o.signal = WTERMSIG(status);
-  o.err = read_text(err);
+  o.exit_code = end.exit_code;
+  o.signal = end.killed_at_limit ? 0 : end.signal;
+  o.timed_out = end.killed_at_limit;
+  o.err = read_text(launch.stderr_path);
   return o;
 }
 
