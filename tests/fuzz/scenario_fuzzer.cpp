@@ -4,9 +4,12 @@
 // sandbox per case and a time bound per case. Every case must run (exit 0) or be refused
 // (exit 1, with exactly one "softgrain: error:" line, the last one); never crash, hang or
 // write anywhere but its run folder <output root>/<name>/, nor write a non-finite number in
-// series.csv (fuzz/case_runner.h). A scenario that names CSV files (grains, contour, profile)
-// also gets as many cases mutating each of them (fuzz/mutations.h, csv_mutations_of); a run
-// folder of free-grains.toml is then tried in odd states (fuzz_run_folders).
+// any CSV table or JSON summary under it (fuzz/case_runner.h). A scenario that names CSV files
+// (grains, contour, profile) also gets as many cases mutating each of them (fuzz/mutations.h,
+// csv_mutations_of); a run folder of free-grains.toml is then tried in odd states
+// (fuzz_run_folders), and a tiny campaign over it (fuzz/campaign_cases.h) is swept for real,
+// unchanged and mutated (fuzz_campaign_runs): runs, analyses and campaign.csv checked alike
+// (a sweep may also end in 3, runs done without mu, or 1 listing its failed runs).
 //
 //   scenario_fuzzer SOFTGRAIN EXAMPLES_DIR
 // Environment (CI uses the defaults):
@@ -29,6 +32,7 @@
 #include <random>
 #include <sstream>
 
+#include "fuzz/campaign_cases.h"
 #include "fuzz/case_runner.h"
 #include "fuzz/mutations.h"
 
@@ -36,6 +40,10 @@ namespace fs = std::filesystem;
 using namespace sg::fuzz;
 
 namespace {
+
+// Sampled mutations of the tiny campaign run whole (each a sweep of two short runs and their
+// analyses: about 1 s, 5 s under the sanitizers); SOFTGRAIN_FUZZ_CASES=all runs them all.
+constexpr std::size_t kCampaignRunCases = 4;
 
 std::string env_or(const char* name, const std::string& fallback) {
   const char* v = std::getenv(name);
@@ -69,12 +77,13 @@ bool is_campaign(const std::string& text) {
 
 struct Counts {
   int ran = 0, refused_with_key = 0, refused_other = 0, failed = 0;
-  double slowest = 0.0;
+  double slowest = 0.0, seconds = 0.0;  // the slowest case; all cases together
   std::string slowest_case;
 };
 
 void count(const CaseResult& r, const std::string& what, Counts& counts,
            std::map<std::string, int>& unnamed, int& failed) {
+  counts.seconds += r.seconds;
   if (r.seconds > counts.slowest) {
     counts.slowest = r.seconds;
     counts.slowest_case = what;
@@ -112,8 +121,9 @@ void fuzz_run_folders(const Sandbox& sandbox, const fs::path& executable, const 
   const std::string text = read_text(example);
   const fs::path seed = sandbox.root.string() + "-seed";
   std::string run_name;
-  // The seed: longer and longer stops until the folder holds a checkpoint.
-  for (const char* steps : {"200", "1000", "5000"}) {
+  // The seed: longer and longer stops until the folder holds a checkpoint (free-grains.toml
+  // writes its first between steps 200 and 1000: a try at 200 was a run for nothing).
+  for (const char* steps : {"1000", "5000"}) {
     run_case(sandbox, executable, {"run", name, "-o", "../root", "--max-steps", steps}, name, text,
              {}, timeout);
     for (const auto& e : fs::directory_iterator(sandbox.output_root()))
@@ -183,6 +193,7 @@ void fuzz_run_folders(const Sandbox& sandbox, const fs::path& executable, const 
                    }});
 
   int failed = 0;
+  const double started = counts.seconds;
   for (const FolderCase& c : cases) {
     std::vector<std::string> args = {"run",         name, "-o",        "../root",
                                      "--max-steps", "2",  "--threads", "1"};
@@ -203,7 +214,45 @@ void fuzz_run_folders(const Sandbox& sandbox, const fs::path& executable, const 
   }
   fs::remove_all(seed);
   std::cout << "run folders of " << name << ": " << cases.size() << " cases, " << failed
-            << " failed\n"
+            << " failed, " << counts.seconds - started << " s\n"
+            << std::flush;
+}
+
+// The tiny campaign (fuzz/campaign_cases.h) run for real: `sampled` of its mutations (0:
+// all), each a whole `softgrain sweep` (runs, analyses, campaign.csv) checked like any case.
+void fuzz_campaign_runs(const Sandbox& sandbox, const fs::path& executable,
+                        const fs::path& free_grains, std::size_t sampled, const std::string& escape,
+                        std::mt19937_64& random, double timeout, Counts& counts,
+                        std::map<std::string, int>& unnamed) {
+  const CampaignSeed seed = tiny_campaign(read_text(free_grains));
+  // The base scenario waits outside the sandbox root (whose every entry is checked).
+  const fs::path seeds = sandbox.root.string() + "-campaign";
+  fs::create_directories(seeds);
+  std::ofstream(seeds / seed.base_file, std::ios::binary) << seed.base_text;
+  std::vector<Mutation> cases = mutations_of(seed.campaign_text, escape);
+  const std::size_t total = cases.size();
+  std::shuffle(cases.begin(), cases.end(), random);
+  if (sampled > 0 && cases.size() > sampled) cases.resize(sampled);
+  cases.insert(cases.begin(), Mutation{"unchanged", seed.campaign_text});  // must run
+  int failed = 0;
+  const double started = counts.seconds;
+  for (const Mutation& m : cases) {
+    const CaseResult r =
+        run_case(sandbox, executable, {"sweep", seed.campaign_file, "-o", "../root", "--no-plot"},
+                 seed.campaign_file, m.text, {seeds / seed.base_file}, timeout);
+    if (m.what == "unchanged" && r.outcome != CaseResult::Outcome::ran) {
+      CaseResult wrong = r;
+      wrong.outcome = CaseResult::Outcome::failed;
+      wrong.detail = "the unchanged campaign did not run: " + r.detail;
+      count(wrong, "campaign run: unchanged", counts, unnamed, failed);
+    } else {
+      count(r, "campaign run: " + m.what, counts, unnamed, failed);
+    }
+  }
+  fs::remove_all(seeds);
+  std::cout << "campaign runs of " << seed.campaign_file << ": " << cases.size() << " cases ("
+            << cases.size() - 1 << " of " << total << " mutations), " << failed << " failed, "
+            << counts.seconds - started << " s\n"
             << std::flush;
 }
 
@@ -244,7 +293,10 @@ int main(int argc, char** argv) {
     std::vector<Mutation> cases = mutations_of(text, sandbox.escape_target().string());
     const std::size_t total = cases.size();
     std::shuffle(cases.begin(), cases.end(), random);
-    if (!all && cases.size() > per_file) cases.resize(per_file);
+    // A campaign example is only expanded (--dry-run): half its share, the other half going
+    // to the tiny campaign run whole (fuzz_campaign_runs), within the same time.
+    const std::size_t sampled = is_campaign(text) ? (per_file + 1) / 2 : per_file;
+    if (!all && cases.size() > sampled) cases.resize(sampled);
     const std::string name = file.filename().string();
     std::vector<std::string> args;
     std::vector<fs::path> companions, csv_files;
@@ -282,6 +334,7 @@ int main(int argc, char** argv) {
       }
     }
     int file_failed = 0;
+    const double started = counts.seconds;
     for (const Case& c : all_cases) {
       const Mutation& m = c.mutation;
       const CaseResult r =
@@ -290,13 +343,18 @@ int main(int argc, char** argv) {
     }
     std::cout << name << ": " << all_cases.size() << " cases (" << cases.size() << " of " << total
               << " mutations of the file, " << all_cases.size() - cases.size()
-              << " of its CSV files), " << file_failed << " failed\n"
+              << " of its CSV files), " << file_failed << " failed, " << counts.seconds - started
+              << " s\n"
               << std::flush;
   }
-  // The smallest example's run folder in odd states (sampled like a file's mutations).
-  if (const fs::path free_grains = examples / "free-grains.toml"; fs::exists(free_grains))
+  // The smallest example's run folder in odd states (sampled like a file's mutations), and a
+  // tiny campaign over it run whole.
+  if (const fs::path free_grains = examples / "free-grains.toml"; fs::exists(free_grains)) {
     fuzz_run_folders(sandbox, executable, free_grains, all ? 0 : per_file, random, timeout, counts,
                      unnamed);
+    fuzz_campaign_runs(sandbox, executable, free_grains, all ? 0 : kCampaignRunCases,
+                       sandbox.escape_target().string(), random, timeout, counts, unnamed);
+  }
   fs::remove_all(sandbox.root);
   for (const auto& [message, n] : unnamed)
     std::cout << "refused without naming the file and key (" << n << "x): " << message << "\n";
@@ -304,7 +362,7 @@ int main(int argc, char** argv) {
             << "): " << counts.ran + counts.refused_with_key + counts.refused_other + counts.failed
             << " cases: " << counts.ran << " ran, " << counts.refused_with_key
             << " refused naming the file and key, " << counts.refused_other
-            << " refused otherwise, " << counts.failed << " failed; slowest " << counts.slowest
-            << " s (" << counts.slowest_case << ")\n";
+            << " refused otherwise, " << counts.failed << " failed; " << counts.seconds
+            << " s in cases; slowest " << counts.slowest << " s (" << counts.slowest_case << ")\n";
   return counts.failed == 0 ? 0 : 1;
 }
