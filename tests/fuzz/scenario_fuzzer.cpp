@@ -5,8 +5,9 @@
 // (exit 1, with exactly one "softgrain: error:" line, the last one); never crash, hang or
 // write anywhere but its run folder <output root>/<name>/, nor write a non-finite number in
 // any CSV table or JSON summary under it (fuzz/case_runner.h). A scenario that names CSV files
-// (grains, contour, profile) also gets as many cases mutating each of them (fuzz/mutations.h,
-// csv_mutations_of); a run folder of free-grains.toml is then tried in odd states
+// (grains, contour, profile) also gets cases mutating each of them (fuzz/mutations.h,
+// csv_mutations_of; a scenario of its own, fuzz/csv_seed.h, names a contour and a profile
+// file, which no example does); a run folder of free-grains.toml is then tried in odd states
 // (fuzz_run_folders), and a tiny campaign over it (fuzz/campaign_cases.h) is swept for real,
 // unchanged and mutated (fuzz_campaign_runs): runs, analyses and campaign.csv checked alike
 // (a sweep may also end in 3, runs done without mu, or 1 listing its failed runs).
@@ -34,6 +35,7 @@
 
 #include "fuzz/campaign_cases.h"
 #include "fuzz/case_runner.h"
+#include "fuzz/csv_seed.h"
 #include "fuzz/mutations.h"
 
 namespace fs = std::filesystem;
@@ -284,6 +286,13 @@ int main(int argc, char** argv) {
         (full || e.path().stem().string().find("-full") == std::string::npos))
       files.push_back(e.path());
   std::sort(files.begin(), files.end());
+  // The fuzzer's own scenario naming a contour and a profile file (fuzz/csv_seed.h), last;
+  // it waits outside the sandbox root (whose every entry is checked).
+  const fs::path csv_seed = sandbox.root.string() + "-csv-seed";
+  fs::create_directories(csv_seed);
+  for (const SeedFile& f : csv_seed_files())
+    std::ofstream(csv_seed / f.name, std::ios::binary) << f.text;
+  files.push_back(csv_seed / csv_seed_files().front().name);
 
   Counts counts;
   std::map<std::string, int> unnamed;  // refusals without file and key: message -> count
@@ -297,6 +306,7 @@ int main(int argc, char** argv) {
     // to the tiny campaign run whole (fuzz_campaign_runs), within the same time.
     const std::size_t sampled = is_campaign(text) ? (per_file + 1) / 2 : per_file;
     if (!all && cases.size() > sampled) cases.resize(sampled);
+    if (file.parent_path() == csv_seed) cases.clear();  // only its CSV files are inputs here
     const std::string name = file.filename().string();
     std::vector<std::string> args;
     std::vector<fs::path> companions, csv_files;
@@ -308,7 +318,7 @@ int main(int argc, char** argv) {
         if (f != file) companions.push_back(f);  // the base scenario it names
     } else {
       args = {"run", name, "-o", "../root", "--max-steps", "2", "--threads", "1"};
-      csv_files = csv_files_named(text, examples);  // the data files it points to
+      csv_files = csv_files_named(text, file.parent_path());  // the data files it points to
       companions = csv_files;
     }
     // The cases: mutations of the file itself, then of each CSV file it names (issue #26),
@@ -324,7 +334,10 @@ int main(int argc, char** argv) {
     for (const fs::path& csv : csv_files) {
       std::vector<Mutation> csv_cases = csv_mutations_of(read_text(csv));
       std::shuffle(csv_cases.begin(), csv_cases.end(), random);
-      if (!all && csv_cases.size() > per_file) csv_cases.resize(per_file);
+      // Half a file's share each: the grains, contour and profile readers share one CSV
+      // table (scenario/csv_table.h), and three files at the full share would add a third
+      // to the fuzzer's time.
+      if (!all && csv_cases.size() > (per_file + 1) / 2) csv_cases.resize((per_file + 1) / 2);
       std::vector<fs::path> others = {file};
       for (const fs::path& c : companions)
         if (c != csv) others.push_back(c);
@@ -356,6 +369,7 @@ int main(int argc, char** argv) {
                        sandbox.escape_target().string(), random, timeout, counts, unnamed);
   }
   fs::remove_all(sandbox.root);
+  fs::remove_all(csv_seed);
   for (const auto& [message, n] : unnamed)
     std::cout << "refused without naming the file and key (" << n << "x): " << message << "\n";
   std::cout << "scenario fuzzer (seed " << seed
