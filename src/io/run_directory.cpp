@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/file_name.h"
+#include "io/atomic_file.h"
 
 namespace sg {
 
@@ -107,6 +108,7 @@ bool is_softgrain_run_folder(const fs::path& dir) {
 void refuse_links_in_run_folder(const fs::path& dir) {
   std::error_code error;
   if (!fs::is_directory(fs::symlink_status(dir, error))) return;  // nothing there yet
+  guard_run_folder(dir);  // and no link followed by any later write there (io/atomic_file.h)
   refuse_links_in(dir);
   for (std::string_view sub : kSubfolders)
     if (fs::is_directory(fs::symlink_status(dir / sub, error))) refuse_links_in(dir / sub);
@@ -176,6 +178,7 @@ fs::path prepare_run_directory(const fs::path& output_root, const std::string& n
                                                          << "': " << error.message());
   fs::create_directories(dir, error);
   SG_VERIFY(!error, "cannot create run folder '" << dir.string() << "': " << error.message());
+  guard_run_folder(dir);  // every later write there: no link followed (io/atomic_file.h)
   return dir;
 }
 

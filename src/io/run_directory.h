@@ -13,6 +13,9 @@
 //   - nothing in the folder, and nothing in its subfolders fields/, grains/, contacts/,
 //     sample/, render/, analysis/, may be a symbolic link: a linked fields/ would take the
 //     snapshots elsewhere, a linked series.csv.partial its rows (issue #26);
+//   - from then on every file written atomically there is created through the folder's own
+//     descriptor with no link followed (io/atomic_file.h, guard_run_folder): a subfolder
+//     replaced by a link mid-run is refused too;
 //   - the output root, when it exists, must be a folder;
 //   - starting over in the folder of another scenario's run (its run.log names another
 //     scenario file) is refused: the new run would leave the old one's snapshots, grains and

@@ -9,6 +9,7 @@
 #include "model/kinematics.h"
 #include "scenario/body_builders.h"
 #include "scenario/geometry_checks.h"
+#include "scenario/motion_limits.h"
 #include "scenario/scenario_readers.h"
 #include "scenario/toml_reader.h"
 
@@ -86,6 +87,16 @@ void check_contact_reach(const TomlReader& root, const ScenarioDef& s,
   law.fail("law", message.str());
 }
 
+// The shear cell's first bodies: the sliding velocity and the drive tables.
+void check_first_body_drives(const TomlReader& t, const ShearCellDef& c,
+                             const TravelLimit& travel) {
+  travel.check_speed(t, "velocity", c.velocity, "the shear cell's first bodies");
+  for (const char* side : {"bottom", "top"})
+    if (auto d = t.table(std::string(side) + "_drive"))
+      travel.check_drive(*d, std::string(side) == "bottom" ? c.bottom_drive : c.top_drive,
+                         std::string("the ") + side + " first body");
+}
+
 // The scenario `document` holds, checked (`file` names it in messages).
 ScenarioDef read_scenario(const TomlDocument& document, const std::filesystem::path& file) {
   const TomlReader root = document.root();
@@ -101,10 +112,15 @@ ScenarioDef read_scenario(const TomlDocument& document, const std::filesystem::p
   read_physics(root, s);
   read_periodic(root, s);
   const std::set<std::string> material_names = read_materials(root, s);
-  if (auto t = root.table("shear_cell")) s.shear_cell = read_shear_cell(*t, material_names);
+  if (auto t = root.table("shear_cell")) {
+    s.shear_cell = read_shear_cell(*t, material_names);
+    check_first_body_drives(*t, *s.shear_cell, TravelLimit(s));
+  }
   if (auto t = root.table("compaction_box")) {
     if (s.shear_cell) t->fail("width", "a scenario holds a [shear_cell] or a [compaction_box]");
     s.compaction_box = read_compaction_box(*t, material_names);
+    TravelLimit(s).check_speed(*t, "lid_velocity", s.compaction_box->lid_velocity,
+                               "the compaction box's lid");
   }
   std::set<std::string> body_names;
   read_strips(root, s, material_names, body_names);

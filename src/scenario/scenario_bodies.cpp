@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "geometry/polygon.h"
 #include "scenario/csv_table.h"
+#include "scenario/motion_limits.h"
 #include "scenario/scenario_readers.h"
 
 namespace sg {
@@ -220,6 +221,7 @@ std::set<std::string> read_materials(const TomlReader& root, ScenarioDef& s) {
   std::set<std::string> material_names;
   for (const TomlReader& t : root.array_of_tables("materials")) {
     s.materials.push_back(read_material(t));
+    check_material_frequency(t, s.materials.back(), s.discretization.mesh.spacing);
     if (!material_names.insert(s.materials.back().name).second)
       t.fail("name", "material '" + s.materials.back().name + "' is defined twice");
   }
@@ -234,12 +236,21 @@ void read_grains(const TomlReader& root, ScenarioDef& s,
     root.fail("grains",
               "at least one [[grains]] table (or a [shear_cell] or [compaction_box]) is required");
   std::vector<const TomlReader*> tables;  // of each grain
+  const TravelLimit travel(s);
   for (std::size_t i = 0; i < grains.size(); ++i) {
     const std::size_t first = s.grains.size();
-    if (grains[i].has("grains_file"))
+    if (grains[i].has("grains_file")) {
       read_grains_file(grains[i], s.grains);
-    else
+      for (std::size_t k = first; k < s.grains.size(); ++k)
+        travel.check_speed(grains[i], "grains_file", s.grains[k].velocity.norm(),
+                           "grain '" + s.grains[k].name + "' (columns vx, vy)");
+    } else {
       s.grains.push_back(read_grain(grains[i], i));
+      const GrainSpec& g = s.grains.back();
+      travel.check_speed(grains[i], "velocity", g.velocity.norm(), "grain '" + g.name + "'");
+      if (auto d = grains[i].table("drive"))
+        travel.check_drive(*d, g.drive, "grain '" + g.name + "'");
+    }
     for (std::size_t k = first; k < s.grains.size(); ++k) {
       if (!material_names.count(s.grains[k].material))
         grains[i].fail(
@@ -256,8 +267,12 @@ void read_grains(const TomlReader& root, ScenarioDef& s,
 void read_walls(const TomlReader& root, ScenarioDef& s, const std::set<std::string>& material_names,
                 std::set<std::string>& body_names) {
   const std::vector<TomlReader> walls = root.array_of_tables("walls");
+  const TravelLimit travel(s);
   for (std::size_t i = 0; i < walls.size(); ++i) {
     s.walls.push_back(read_wall(walls[i], i));
+    const WallDef& w = s.walls.back();
+    travel.check_speed(walls[i], "velocity", w.velocity.norm(), "wall '" + w.name + "'");
+    if (auto d = walls[i].table("drive")) travel.check_drive(*d, w.drive, "wall '" + w.name + "'");
     if (!material_names.count(s.walls.back().material))
       walls[i].fail("material", "unknown material '" + s.walls.back().material + "'");
     if (!body_names.insert(s.walls.back().name).second)

@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "scenario/csv_table.h"
+#include "scenario/motion_limits.h"
 #include "scenario/scenario_readers.h"
 
 namespace sg {
@@ -101,7 +102,10 @@ void read_strips(const TomlReader& root, ScenarioDef& s,
     } else {
       t.fail("profile", "required table [strips.profile] is missing");
     }
-    if (auto dt = t.table("drive")) d.drive = read_drive(*dt, false, true);
+    if (auto dt = t.table("drive")) {
+      d.drive = read_drive(*dt, false, true);
+      TravelLimit(s).check_drive(*dt, d.drive, "strip '" + d.name + "'");
+    }
     s.strips.push_back(d);
   }
 }

@@ -74,7 +74,9 @@ double estimate_max_frequency(const Model& model, BodyId body_id, int iterations
   }
   SG_VERIFY(lambda > 0.0 && std::isfinite(lambda),
             "body '" << body.name << "': cannot estimate its highest frequency (got " << lambda
-                     << "); is the body inverted?");
+                     << "): expected a positive, finite value; the body is inverted, or its "
+                        "stiffness over its mass (young over density) is beyond what the "
+                        "arithmetic holds");
   return std::sqrt(lambda);
 }
 

@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <set>
@@ -61,39 +62,67 @@ std::string stray_writes(const Sandbox& s, const std::set<std::string>& inputs) 
   return "";
 }
 
-// Empty if no series.csv(.partial) of the output root holds a non-finite number (a run that
-// "ran" while writing NaN energies, as a density of 1e300 did, is a failure: issue #26).
+// Every file under the output root (run folders, a campaign's runs), in a stable order.
+std::vector<fs::path> files_under(const fs::path& root) {
+  std::vector<fs::path> files;
+  std::error_code error;
+  for (fs::recursive_directory_iterator it(root, error), end; !error && it != end;
+       it.increment(error))
+    if (it->is_regular_file(error) && !it->is_symlink(error)) files.push_back(it->path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// Empty if no CSV table (series.csv(.partial), grains/, analysis/, a campaign.csv) or JSON
+// summary under the output root holds a non-finite number (a run that "ran" while writing
+// NaN energies, as a density of 1e300 did, is a failure: issue #26).
 std::string non_finite_output(const Sandbox& s) {
-  for (const std::string& run : entries(s.output_root()))
-    for (const char* name : {"series.csv", "series.csv.partial"}) {
-      std::ifstream in(s.output_root() / run / name, std::ios::binary);
-      int line_number = 0;
-      for (std::string line; std::getline(in, line);) {
-        ++line_number;
-        std::istringstream cells(line);
-        for (std::string cell; std::getline(cells, cell, ',');)
-          if (cell == "nan" || cell == "-nan" || cell == "inf" || cell == "-inf")
-            return "wrote '" + cell + "' in " + run + "/" + name + " line " +
-                   std::to_string(line_number);
+  for (const fs::path& file : files_under(s.output_root())) {
+    const std::string name = file.filename().string();
+    const bool csv = file.extension() == ".csv" || name == "series.csv.partial";
+    const bool json = file.extension() == ".json";
+    if (!csv && !json) continue;
+    std::ifstream in(file, std::ios::binary);
+    int line_number = 0;
+    for (std::string line; std::getline(in, line);) {
+      ++line_number;
+      const std::string where = " in " + file.lexically_relative(s.output_root()).string() +
+                                " line " + std::to_string(line_number);
+      if (json) {
+        for (const char* bad : {"NaN", "Infinity"})
+          if (line.find(bad) != std::string::npos)
+            return "wrote '" + std::string(bad) + "'" + where;
+        continue;
       }
+      // analysis/profiles.csv: a bin no grain visited has no mean (count 0, then nan) by
+      // design (analysis/profiles.cpp); any other nan there is a failure.
+      if (name == "profiles.csv" && line.find(",0,") != std::string::npos &&
+          line.find(",0,") == line.find(','))
+        continue;
+      std::istringstream cells(line);
+      for (std::string cell; std::getline(cells, cell, ',');)
+        if (cell == "nan" || cell == "-nan" || cell == "inf" || cell == "-inf")
+          return "wrote '" + cell + "'" + where;
     }
+  }
   return "";
 }
 
-// Empty if every file that a .pvd of the output root lists exists (a resumed run whose
+// Empty if every file that a .pvd under the output root lists exists (a resumed run whose
 // snapshots were deleted listed them all the same: issue #26).
 std::string missing_snapshots(const Sandbox& s) {
-  for (const std::string& run : entries(s.output_root()))
-    for (const char* index : {"fields.pvd", "contacts.pvd"}) {
-      const std::string text = read_text(s.output_root() / run / index);
-      constexpr std::string_view kFile = "file=\"";
-      for (auto at = text.find(kFile); at != std::string::npos; at = text.find(kFile, at + 1)) {
-        const auto begin = at + kFile.size(), end = text.find('"', begin);
-        const std::string file = text.substr(begin, end - begin);
-        if (!fs::is_regular_file(s.output_root() / run / file))
-          return run + "/" + index + " lists " + file + ", which is missing";
-      }
+  for (const fs::path& index : files_under(s.output_root())) {
+    if (index.extension() != ".pvd") continue;
+    const std::string text = read_text(index);
+    constexpr std::string_view kFile = "file=\"";
+    for (auto at = text.find(kFile); at != std::string::npos; at = text.find(kFile, at + 1)) {
+      const auto begin = at + kFile.size(), end = text.find('"', begin);
+      const std::string file = text.substr(begin, end - begin);
+      if (!fs::is_regular_file(index.parent_path() / file))
+        return index.lexically_relative(s.output_root()).string() + " lists " + file +
+               ", which is missing";
     }
+  }
   return "";
 }
 
@@ -172,12 +201,33 @@ CaseResult run_case(const Sandbox& s, const fs::path& executable,
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::vector<std::string> err = non_empty_lines(read_text(s.root / "logs" / "stderr"));
   std::string last = err.empty() ? "(no output)" : err.back();
+  const bool sweep = !args.empty() && args.front() == "sweep";
+  std::string sweep_failure;  // a sweep's first "failed: <run>: why" line, if it has no error
+  if (sweep) {
+    int error_lines = 0;
+    for (const std::string& l : err)
+      if (l.rfind("softgrain: error: ", 0) == 0) ++error_lines;
+    for (const std::string& l : non_empty_lines(read_text(s.root / "logs" / "stdout")))
+      if (error_lines == 0 && sweep_failure.empty() && l.rfind("  failed: ", 0) == 0)
+        sweep_failure = l;
+    bool marked = false;
+    for (const fs::path& f : files_under(s.output_root()))
+      marked = marked || f.filename() == "sweep.failed";
+    if (!marked) sweep_failure.clear();
+  }
   if (exit.timed_out) {
     r.detail = "no end within " + std::to_string(timeout_seconds) + " s (hang?); last: " + last;
   } else if (WIFSIGNALED(exit.status)) {
     r.detail = "killed by signal " + std::to_string(WTERMSIG(exit.status)) + "; last: " + last;
-  } else if (WEXITSTATUS(exit.status) == 0) {
+  } else if (WEXITSTATUS(exit.status) == 0 || (sweep && WEXITSTATUS(exit.status) == 3)) {
+    // A sweep's 3: its runs done, their analysis could not measure mu (not a shear cell).
     r.outcome = CaseResult::Outcome::ran;
+  } else if (sweep && WEXITSTATUS(exit.status) == 1 && !sweep_failure.empty()) {
+    // A sweep whose runs failed: it lists them ("  failed: <id>: why") and marks each
+    // folder (sweep.failed); no "softgrain: error:" line.
+    r.outcome = CaseResult::Outcome::refused;
+    r.detail = sweep_failure;
+    r.names_file = sweep_failure.find("key '") != std::string::npos;
   } else if (WEXITSTATUS(exit.status) != 1) {
     r.detail = "exit status " + std::to_string(WEXITSTATUS(exit.status)) + "; last: " + last;
   } else {

@@ -4,9 +4,13 @@
 // sandbox per case and a time bound per case. Every case must run (exit 0) or be refused
 // (exit 1, with exactly one "softgrain: error:" line, the last one); never crash, hang or
 // write anywhere but its run folder <output root>/<name>/, nor write a non-finite number in
-// series.csv (fuzz/case_runner.h). A scenario that names CSV files (grains, contour, profile)
-// also gets as many cases mutating each of them (fuzz/mutations.h, csv_mutations_of); a run
-// folder of free-grains.toml is then tried in odd states (fuzz_run_folders).
+// any CSV table or JSON summary under it (fuzz/case_runner.h). A scenario that names CSV files
+// (grains, contour, profile) also gets cases mutating each of them (fuzz/mutations.h,
+// csv_mutations_of; a scenario of its own, fuzz/csv_seed.h, names a contour and a profile
+// file, which no example does); a run folder of free-grains.toml is then tried in odd states
+// (fuzz_run_folders), and a tiny campaign over it (fuzz/campaign_cases.h) is swept for real,
+// unchanged and mutated (fuzz_campaign_runs): runs, analyses and campaign.csv checked alike
+// (a sweep may also end in 3, runs done without mu, or 1 listing its failed runs).
 //
 //   scenario_fuzzer SOFTGRAIN EXAMPLES_DIR
 // Environment (CI uses the defaults):
@@ -29,13 +33,19 @@
 #include <random>
 #include <sstream>
 
+#include "fuzz/campaign_cases.h"
 #include "fuzz/case_runner.h"
+#include "fuzz/csv_seed.h"
 #include "fuzz/mutations.h"
 
 namespace fs = std::filesystem;
 using namespace sg::fuzz;
 
 namespace {
+
+// Sampled mutations of the tiny campaign run whole (each a sweep of two short runs and their
+// analyses: about 1 s, 5 s under the sanitizers); SOFTGRAIN_FUZZ_CASES=all runs them all.
+constexpr std::size_t kCampaignRunCases = 4;
 
 std::string env_or(const char* name, const std::string& fallback) {
   const char* v = std::getenv(name);
@@ -69,12 +79,13 @@ bool is_campaign(const std::string& text) {
 
 struct Counts {
   int ran = 0, refused_with_key = 0, refused_other = 0, failed = 0;
-  double slowest = 0.0;
+  double slowest = 0.0, seconds = 0.0;  // the slowest case; all cases together
   std::string slowest_case;
 };
 
 void count(const CaseResult& r, const std::string& what, Counts& counts,
            std::map<std::string, int>& unnamed, int& failed) {
+  counts.seconds += r.seconds;
   if (r.seconds > counts.slowest) {
     counts.slowest = r.seconds;
     counts.slowest_case = what;
@@ -112,8 +123,9 @@ void fuzz_run_folders(const Sandbox& sandbox, const fs::path& executable, const 
   const std::string text = read_text(example);
   const fs::path seed = sandbox.root.string() + "-seed";
   std::string run_name;
-  // The seed: longer and longer stops until the folder holds a checkpoint.
-  for (const char* steps : {"200", "1000", "5000"}) {
+  // The seed: longer and longer stops until the folder holds a checkpoint (free-grains.toml
+  // writes its first between steps 200 and 1000: a try at 200 was a run for nothing).
+  for (const char* steps : {"1000", "5000"}) {
     run_case(sandbox, executable, {"run", name, "-o", "../root", "--max-steps", steps}, name, text,
              {}, timeout);
     for (const auto& e : fs::directory_iterator(sandbox.output_root()))
@@ -183,6 +195,7 @@ void fuzz_run_folders(const Sandbox& sandbox, const fs::path& executable, const 
                    }});
 
   int failed = 0;
+  const double started = counts.seconds;
   for (const FolderCase& c : cases) {
     std::vector<std::string> args = {"run",         name, "-o",        "../root",
                                      "--max-steps", "2",  "--threads", "1"};
@@ -203,7 +216,45 @@ void fuzz_run_folders(const Sandbox& sandbox, const fs::path& executable, const 
   }
   fs::remove_all(seed);
   std::cout << "run folders of " << name << ": " << cases.size() << " cases, " << failed
-            << " failed\n"
+            << " failed, " << counts.seconds - started << " s\n"
+            << std::flush;
+}
+
+// The tiny campaign (fuzz/campaign_cases.h) run for real: `sampled` of its mutations (0:
+// all), each a whole `softgrain sweep` (runs, analyses, campaign.csv) checked like any case.
+void fuzz_campaign_runs(const Sandbox& sandbox, const fs::path& executable,
+                        const fs::path& free_grains, std::size_t sampled, const std::string& escape,
+                        std::mt19937_64& random, double timeout, Counts& counts,
+                        std::map<std::string, int>& unnamed) {
+  const CampaignSeed seed = tiny_campaign(read_text(free_grains));
+  // The base scenario waits outside the sandbox root (whose every entry is checked).
+  const fs::path seeds = sandbox.root.string() + "-campaign";
+  fs::create_directories(seeds);
+  std::ofstream(seeds / seed.base_file, std::ios::binary) << seed.base_text;
+  std::vector<Mutation> cases = mutations_of(seed.campaign_text, escape);
+  const std::size_t total = cases.size();
+  std::shuffle(cases.begin(), cases.end(), random);
+  if (sampled > 0 && cases.size() > sampled) cases.resize(sampled);
+  cases.insert(cases.begin(), Mutation{"unchanged", seed.campaign_text});  // must run
+  int failed = 0;
+  const double started = counts.seconds;
+  for (const Mutation& m : cases) {
+    const CaseResult r =
+        run_case(sandbox, executable, {"sweep", seed.campaign_file, "-o", "../root", "--no-plot"},
+                 seed.campaign_file, m.text, {seeds / seed.base_file}, timeout);
+    if (m.what == "unchanged" && r.outcome != CaseResult::Outcome::ran) {
+      CaseResult wrong = r;
+      wrong.outcome = CaseResult::Outcome::failed;
+      wrong.detail = "the unchanged campaign did not run: " + r.detail;
+      count(wrong, "campaign run: unchanged", counts, unnamed, failed);
+    } else {
+      count(r, "campaign run: " + m.what, counts, unnamed, failed);
+    }
+  }
+  fs::remove_all(seeds);
+  std::cout << "campaign runs of " << seed.campaign_file << ": " << cases.size() << " cases ("
+            << cases.size() - 1 << " of " << total << " mutations), " << failed << " failed, "
+            << counts.seconds - started << " s\n"
             << std::flush;
 }
 
@@ -235,6 +286,13 @@ int main(int argc, char** argv) {
         (full || e.path().stem().string().find("-full") == std::string::npos))
       files.push_back(e.path());
   std::sort(files.begin(), files.end());
+  // The fuzzer's own scenario naming a contour and a profile file (fuzz/csv_seed.h), last;
+  // it waits outside the sandbox root (whose every entry is checked).
+  const fs::path csv_seed = sandbox.root.string() + "-csv-seed";
+  fs::create_directories(csv_seed);
+  for (const SeedFile& f : csv_seed_files())
+    std::ofstream(csv_seed / f.name, std::ios::binary) << f.text;
+  files.push_back(csv_seed / csv_seed_files().front().name);
 
   Counts counts;
   std::map<std::string, int> unnamed;  // refusals without file and key: message -> count
@@ -244,7 +302,11 @@ int main(int argc, char** argv) {
     std::vector<Mutation> cases = mutations_of(text, sandbox.escape_target().string());
     const std::size_t total = cases.size();
     std::shuffle(cases.begin(), cases.end(), random);
-    if (!all && cases.size() > per_file) cases.resize(per_file);
+    // A campaign example is only expanded (--dry-run): half its share, the other half going
+    // to the tiny campaign run whole (fuzz_campaign_runs), within the same time.
+    const std::size_t sampled = is_campaign(text) ? (per_file + 1) / 2 : per_file;
+    if (!all && cases.size() > sampled) cases.resize(sampled);
+    if (file.parent_path() == csv_seed) cases.clear();  // only its CSV files are inputs here
     const std::string name = file.filename().string();
     std::vector<std::string> args;
     std::vector<fs::path> companions, csv_files;
@@ -256,7 +318,7 @@ int main(int argc, char** argv) {
         if (f != file) companions.push_back(f);  // the base scenario it names
     } else {
       args = {"run", name, "-o", "../root", "--max-steps", "2", "--threads", "1"};
-      csv_files = csv_files_named(text, examples);  // the data files it points to
+      csv_files = csv_files_named(text, file.parent_path());  // the data files it points to
       companions = csv_files;
     }
     // The cases: mutations of the file itself, then of each CSV file it names (issue #26),
@@ -272,7 +334,10 @@ int main(int argc, char** argv) {
     for (const fs::path& csv : csv_files) {
       std::vector<Mutation> csv_cases = csv_mutations_of(read_text(csv));
       std::shuffle(csv_cases.begin(), csv_cases.end(), random);
-      if (!all && csv_cases.size() > per_file) csv_cases.resize(per_file);
+      // Half a file's share each: the grains, contour and profile readers share one CSV
+      // table (scenario/csv_table.h), and three files at the full share would add a third
+      // to the fuzzer's time.
+      if (!all && csv_cases.size() > (per_file + 1) / 2) csv_cases.resize((per_file + 1) / 2);
       std::vector<fs::path> others = {file};
       for (const fs::path& c : companions)
         if (c != csv) others.push_back(c);
@@ -282,6 +347,7 @@ int main(int argc, char** argv) {
       }
     }
     int file_failed = 0;
+    const double started = counts.seconds;
     for (const Case& c : all_cases) {
       const Mutation& m = c.mutation;
       const CaseResult r =
@@ -290,21 +356,27 @@ int main(int argc, char** argv) {
     }
     std::cout << name << ": " << all_cases.size() << " cases (" << cases.size() << " of " << total
               << " mutations of the file, " << all_cases.size() - cases.size()
-              << " of its CSV files), " << file_failed << " failed\n"
+              << " of its CSV files), " << file_failed << " failed, " << counts.seconds - started
+              << " s\n"
               << std::flush;
   }
-  // The smallest example's run folder in odd states (sampled like a file's mutations).
-  if (const fs::path free_grains = examples / "free-grains.toml"; fs::exists(free_grains))
+  // The smallest example's run folder in odd states (sampled like a file's mutations), and a
+  // tiny campaign over it run whole.
+  if (const fs::path free_grains = examples / "free-grains.toml"; fs::exists(free_grains)) {
     fuzz_run_folders(sandbox, executable, free_grains, all ? 0 : per_file, random, timeout, counts,
                      unnamed);
+    fuzz_campaign_runs(sandbox, executable, free_grains, all ? 0 : kCampaignRunCases,
+                       sandbox.escape_target().string(), random, timeout, counts, unnamed);
+  }
   fs::remove_all(sandbox.root);
+  fs::remove_all(csv_seed);
   for (const auto& [message, n] : unnamed)
     std::cout << "refused without naming the file and key (" << n << "x): " << message << "\n";
   std::cout << "scenario fuzzer (seed " << seed
             << "): " << counts.ran + counts.refused_with_key + counts.refused_other + counts.failed
             << " cases: " << counts.ran << " ran, " << counts.refused_with_key
             << " refused naming the file and key, " << counts.refused_other
-            << " refused otherwise, " << counts.failed << " failed; slowest " << counts.slowest
-            << " s (" << counts.slowest_case << ")\n";
+            << " refused otherwise, " << counts.failed << " failed; " << counts.seconds
+            << " s in cases; slowest " << counts.slowest << " s (" << counts.slowest_case << ")\n";
   return counts.failed == 0 ? 0 : 1;
 }

@@ -23,6 +23,7 @@
 #include <thread>
 #include <vector>
 
+#include "io/softgrain_process.h"
 #include "scenes/scenario_files.h"
 #include "scenes/shear_cell_scenario.h"
 #include "test_locations.h"  // SOFTGRAIN_EXECUTABLE, SOFTGRAIN_SOURCE_DIR
@@ -51,44 +52,19 @@ struct Ended {
 // (0: none); kills it after `kill_after` (if positive) unless it ended before.
 Ended run_softgrain(const fs::path& scenario, const fs::path& out, bool resume, long kill_at,
                     std::chrono::milliseconds kill_after = std::chrono::milliseconds(0)) {
-  std::cout << std::flush;  // or the child would repeat what is buffered
-  std::fflush(nullptr);
-  const pid_t pid = fork();
-  if (pid == 0) {
-    if (kill_at > 0)
-      setenv("SOFTGRAIN_TEST_KILL_AT_WRITE", std::to_string(kill_at).c_str(), 1);
-    else
-      unsetenv("SOFTGRAIN_TEST_KILL_AT_WRITE");
-    const std::string log = (out.parent_path() / (out.filename().string() + ".log")).string();
-    freopen(log.c_str(), "a", stdout);
-    freopen(log.c_str(), "a", stderr);
-    std::vector<std::string> args = {
-        SOFTGRAIN_EXECUTABLE, "run", scenario.string(), "-o", out.string(), "--threads", "2"};
-    if (resume) args.push_back("--resume");
-    std::vector<char*> argv;
-    for (std::string& a : args)
-      argv.push_back(a.data());
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
-  int status = 0;
-  if (kill_after.count() > 0) {
-    const auto deadline = std::chrono::steady_clock::now() + kill_after;
-    while (waitpid(pid, &status, WNOHANG) == 0) {
-      if (std::chrono::steady_clock::now() >= deadline) {
-        kill(pid, SIGKILL);
-        waitpid(pid, &status, 0);
-        break;
-      }
-      std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    }
-  } else {
-    waitpid(pid, &status, 0);
-  }
+  testing::SoftgrainLaunch launch;
+  launch.stdout_path = launch.stderr_path =
+      (out.parent_path() / (out.filename().string() + ".log")).string();
+  launch.append = true;
+  launch.environment = {
+      {"SOFTGRAIN_TEST_KILL_AT_WRITE", kill_at > 0 ? std::to_string(kill_at) : ""}};
+  launch.kill_after = kill_after;
+  std::vector<std::string> args = {"run", scenario.string(), "-o", out.string(), "--threads", "2"};
+  if (resume) args.push_back("--resume");
+  const testing::SoftgrainEnd end = testing::run_softgrain_process(std::move(args), launch);
   Ended e;
-  e.killed = WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL;
-  if (WIFEXITED(status)) e.exit_code = WEXITSTATUS(status);
+  e.killed = end.signal == SIGKILL;
+  e.exit_code = end.exit_code;
   return e;
 }
 

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "io/run_lock.h"
+#include "io/softgrain_process.h"
 #include "scenes/scenario_files.h"
 #include "test_locations.h"  // SOFTGRAIN_EXECUTABLE, SOFTGRAIN_SOURCE_DIR
 
@@ -46,49 +47,24 @@ struct Outcome {
   std::string err;  // stderr
 };
 
-// Runs `softgrain <args>` with a time limit (a hang is a failure, not a stuck test);
-// `file_size_limit` > 0 caps every file the process writes (RLIMIT_FSIZE; the write that
-// passes it fails as on a full disk).
+// Runs `softgrain <args> --threads 1` with a time limit (a hang is a failure, not a stuck
+// test); `file_size_limit` > 0 caps every file the process writes (the write that passes it
+// fails as on a full disk).
 Outcome softgrain(std::vector<std::string> args, long file_size_limit = 0,
                   std::chrono::seconds limit = std::chrono::seconds(60)) {
   static int calls = 0;
-  const fs::path err = temp_root() / ("stderr-" + std::to_string(++calls) + ".txt");
-  std::cout << std::flush;
-  std::fflush(nullptr);
-  const pid_t pid = fork();
-  if (pid == 0) {
-    if (file_size_limit > 0) {
-      signal(SIGXFSZ, SIG_IGN);  // the write fails with EFBIG instead of killing the process
-      const rlimit r{static_cast<rlim_t>(file_size_limit), static_cast<rlim_t>(file_size_limit)};
-      setrlimit(RLIMIT_FSIZE, &r);
-    }
-    freopen("/dev/null", "w", stdout);
-    freopen(err.c_str(), "w", stderr);
-    args.insert(args.begin(), SOFTGRAIN_EXECUTABLE);
-    args.push_back("--threads");
-    args.push_back("1");
-    std::vector<char*> argv;
-    for (std::string& a : args)
-      argv.push_back(a.data());
-    argv.push_back(nullptr);
-    execv(argv[0], argv.data());
-    _exit(127);
-  }
+  testing::SoftgrainLaunch launch;
+  launch.stderr_path = (temp_root() / ("stderr-" + std::to_string(++calls) + ".txt")).string();
+  launch.file_size_limit = file_size_limit;
+  launch.kill_after = limit;
+  args.push_back("--threads");
+  args.push_back("1");
+  const testing::SoftgrainEnd end = testing::run_softgrain_process(std::move(args), launch);
   Outcome o;
-  int status = 0;
-  const auto deadline = std::chrono::steady_clock::now() + limit;
-  while (waitpid(pid, &status, WNOHANG) == 0) {
-    if (std::chrono::steady_clock::now() >= deadline) {
-      kill(pid, SIGKILL);
-      waitpid(pid, &status, 0);
-      o.timed_out = true;
-      break;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  if (WIFEXITED(status)) o.exit_code = WEXITSTATUS(status);
-  if (WIFSIGNALED(status)) o.signal = WTERMSIG(status);
-  o.err = read_text(err);
+  o.exit_code = end.exit_code;
+  o.signal = end.killed_at_limit ? 0 : end.signal;
+  o.timed_out = end.killed_at_limit;
+  o.err = read_text(launch.stderr_path);
   return o;
 }
 
@@ -372,6 +348,60 @@ TEST(HostileCli, ResumeDropsSnapshotsDeletedSinceAndSaysSo) {
   EXPECT_EQ(pvd.find("000001.vtu"), std::string::npos) << pvd;
   EXPECT_NE(pvd.find("000002.vtu"), std::string::npos) << pvd;
   EXPECT_NE(read_text(dir / "run.log").find("# resume: 1 of the "), std::string::npos);
+}
+
+TEST(HostileCli, AStiffnessOverMassBeyondTheArithmeticIsRefusedNamingTheMaterial) {
+  // young 1e80 over density 1e-80: the stable-step estimate overflowed and said "cannot
+  // estimate its highest frequency (got 0); is the body inverted?", naming no input.
+  const std::string text =
+      scenes::replace_once(two_discs("light"), "young = 10.0", "young = 1e80\ndensity = 1e-80");
+  const fs::path scenario = scenes::write_text_file(temp_root() / "light.toml", text);
+  const Outcome o =
+      softgrain({"run", scenario.string(), "-o", (temp_root() / "light-out").string()});
+  expect_refused(o,
+                 "light.toml:10: key 'materials[0].young': material 'soft': young 1e+80 over "
+                 "density 1e-80",
+                 "young over density");
+  EXPECT_NE(o.err.find("expected at most 1e+70"), std::string::npos) << o.err;
+  EXPECT_EQ(o.err.find("inverted"), std::string::npos) << o.err;
+}
+
+TEST(HostileCli, AHugeDriveVelocityIsRefusedNamingTheKey) {
+  // A wall driven at 1e10: the contact grid spanning its reach ended the run at step 1 with
+  // "cannot create std::vector larger than max_size()".
+  const std::string wall = R"([[walls]]
+lower_left = [-2.0, -0.7]
+upper_right = [2.0, -0.5]
+material = "soft"
+velocity = [1e10, 0.0]
+[[contact_laws]]
+materials = ["soft", "soft"]
+law = "frictionless"
+normal_stiffness = 100.0
+)";
+  const fs::path scenario =
+      scenes::write_text_file(temp_root() / "fast-wall.toml", two_discs("fast-wall") + wall);
+  const fs::path out = temp_root() / "fast-out";
+  const Outcome o = softgrain({"run", scenario.string(), "-o", out.string()});
+  expect_refused(o, "fast-wall.toml:23: key 'walls[0].velocity': wall 'wall_0': a speed of 1e+10",
+                 "wall velocity");
+  EXPECT_EQ(o.err.find("max_size"), std::string::npos) << o.err;
+  // The same in a drive table, and a thrown grain.
+  const fs::path drive = scenes::write_text_file(
+      temp_root() / "fast-drive.toml",
+      two_discs("fast-drive") + scenes::replace_once(wall, "velocity = [1e10, 0.0]",
+                                                     "drive = {y = {velocity = [[0.0, 0.0], "
+                                                     "[0.1, -1e12]]}}"));
+  expect_refused(softgrain({"run", drive.string(), "-o", out.string()}),
+                 "key 'walls[0].drive.y.velocity': wall 'wall_0': a speed of 1e+12", "drive");
+  const fs::path thrown = scenes::write_text_file(
+      temp_root() / "thrown.toml",
+      scenes::replace_once(two_discs("thrown"), "radius = 0.5\nmaterial = \"soft\"\n[[grains]]",
+                           "radius = 0.5\nmaterial = \"soft\"\nvelocity = [0.0, 1e9]\n[[grains]]"));
+  expect_refused(softgrain({"run", thrown.string(), "-o", out.string()}),
+                 "thrown.toml:15: key 'grains[0].velocity': grain 'grain_0': a speed of 1e+09",
+                 "thrown grain");
+  EXPECT_FALSE(fs::exists(out / "fast-wall" / "series.csv"));
 }
 
 }  // namespace
