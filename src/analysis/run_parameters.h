@@ -16,6 +16,9 @@ struct RunParameters {
       kUnknown;  // c, contact strength per unit length (stress x length / length = stress in 2D)
   double damping_alpha = kUnknown;  // alpha, stiffness-proportional Rayleigh coefficient (time)
   double mean_diameter = kUnknown;  // mean grain diameter (length); grid spacing default
+  // p, the normal stress imposed on the loaded first body under pressure loading (stress:
+  // force per unit length in 2D); NaN under gap loading, where sigma_n is an output.
+  double pressure = kUnknown;
 };
 
 }  // namespace sg

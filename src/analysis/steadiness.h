@@ -41,6 +41,8 @@ struct SteadinessThresholds {
   double stress_imbalance = 0.05;  // |sigma_top - sigma_bottom| / mean
   double significance = 3.0;       // standard errors
   double relative_floor = 0.02;    // of mu, or of the energy dissipated in the window
+  // |sigma_loaded / p - 1| under pressure loading (analysis/pressure_loading.h)
+  double pressure_mismatch = 0.1;
 };
 
 struct SteadinessWarning {

@@ -59,10 +59,17 @@ std::vector<SummaryEntry> summary_entries(const AnalysisSummary& s) {
   add_friction(e, s.friction.mean, "bodies averaged");
   for (const auto& f : s.friction.bodies)
     add_friction(e, f, "body '" + f.body + "'");
+  e.push_back({"imposed_pressure", s.imposed_pressure, "stress",
+               "p, the normal stress imposed on the loaded first body 'top' under pressure "
+               "loading (paper 003 §2), the sigma_n of E~ and c~; null under gap loading"});
+  // Which sigma_n the coordinates use (analysis/pressure_loading.h).
+  const std::string sigma = std::isfinite(s.imposed_pressure)
+                                ? "sigma_n = imposed_pressure p"
+                                : "sigma_n = normal_stress, the bodies' measured mean";
   e.push_back({"stiffness_tilde", s.dimensionless.stiffness, "1",
-               "E~ = log10(E / sigma_n) (paper 001 eq. 2)"});
+               "E~ = log10(E / sigma_n), " + sigma + " (paper 001 eq. 2)"});
   e.push_back({"cohesion_tilde", s.dimensionless.cohesion, "1",
-               "c~ = log10(c / sigma_n) (paper 001 eq. 3)"});
+               "c~ = log10(c / sigma_n), " + sigma + " (paper 001 eq. 3)"});
   e.push_back({"viscosity_tilde", s.dimensionless.viscosity, "1",
                "alpha~ = log10(alpha V / D) (paper 001 eq. 4)"});
   const EnergyBudget en = s.energy.value_or(

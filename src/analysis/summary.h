@@ -27,6 +27,9 @@ struct AnalysisSummary {
   TimeWindow window;
   FrictionResult friction;
   DimensionlessParameters dimensionless;
+  // p imposed on the loaded first body under pressure loading, the sigma_n of E~ and c~
+  // (analysis/pressure_loading.h); NaN under gap loading.
+  double imposed_pressure = RunParameters::kUnknown;
   std::optional<EnergyBudget> energy;  // absent if the budget is undefined
   double solid_fraction = RunParameters::kUnknown;
   // Activated third-body thickness, mean over the window's snapshots (activated_thickness.h).

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "campaign/campaign_def.h"
+#include "io/atomic_file.h"
 #include "model/kinematics.h"
 #include "scenario/scenario.h"
 
@@ -115,6 +117,30 @@ std::vector<std::pair<std::string, double>> paper_values(const PaperFrame& f, st
   for (const std::string& k : f.cohesion_keys)
     out.emplace_back(k, f.pressure * scale);
   return out;
+}
+
+std::string requested_coordinates_csv(const CampaignDef& campaign) {
+  std::vector<std::size_t> coordinates;
+  for (std::size_t p = 0; p < campaign.parameters.size(); ++p)
+    if (campaign.parameters[p].paper_coordinate) coordinates.push_back(p);
+  if (coordinates.empty()) return {};
+  std::string text = "id";
+  for (std::size_t p : coordinates)
+    text += "," + campaign.parameters[p].key;
+  text += "\n";
+  for (const CampaignRun& run : campaign.runs) {
+    text += run.id;
+    for (std::size_t p : coordinates)
+      text += "," + run.values[p];
+    text += "\n";
+  }
+  return text;
+}
+
+void write_requested_coordinates(const CampaignDef& campaign,
+                                 const std::filesystem::path& campaign_folder) {
+  const std::string text = requested_coordinates_csv(campaign);
+  if (!text.empty()) write_file_atomically(campaign_folder / kRequestedCoordinatesFile, text);
 }
 
 }  // namespace sg

@@ -13,6 +13,12 @@
 // layer compacts under the load. D is an output of the run: `analyze` measures it, and
 // campaign.csv reports the realized alpha~ (viscosity_tilde) next to the requested one
 // (viscosity_tilde_requested).
+//
+// The requested coordinates of every run are also written to <campaign folder>/
+// paper_coordinates.csv (columns: id, then each varied coordinate in the campaign's order; one
+// row per run, values as written in the campaign file), where `softgrain analyze` of a run
+// folder <campaign folder>/runs/<id>/ finds them for its summary.json ("campaign":
+// report/campaign_request.cpp), however the run was started (locally, or by Slurm).
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -23,6 +29,10 @@
 #include <toml++/toml.h>
 
 namespace sg {
+
+struct CampaignDef;
+
+inline constexpr const char* kRequestedCoordinatesFile = "paper_coordinates.csv";
 
 bool is_paper_coordinate(std::string_view key);
 
@@ -45,5 +55,11 @@ PaperFrame read_paper_frame(
 // The scenario keys and their values (as TOML numbers) for one coordinate's value.
 std::vector<std::pair<std::string, double>> paper_values(const PaperFrame& frame,
                                                          std::string_view key, double value);
+
+// The text of paper_coordinates.csv; empty if the campaign varies no coordinate.
+std::string requested_coordinates_csv(const CampaignDef& campaign);
+// Writes it atomically into the campaign folder (nothing if the campaign varies none).
+void write_requested_coordinates(const CampaignDef& campaign,
+                                 const std::filesystem::path& campaign_folder);
 
 }  // namespace sg

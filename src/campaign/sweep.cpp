@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "campaign/campaign_table.h"
+#include "campaign/paper_coordinates.h"
 #include "campaign/run_queue.h"
 #include "campaign/slurm_campaign.h"
 #include "campaign/slurm_script.h"
@@ -187,6 +188,7 @@ fs::path prepare_campaign_folder(const CampaignDef& campaign, const SweepOptions
   fs::create_directories(folder);
   write_file_atomically(folder / "campaign.toml", read_text_or_empty(campaign.file));
   write_run_scenarios(campaign, folder);
+  write_requested_coordinates(campaign, folder);  // for the runs' summary.json
   return folder;
 }
 

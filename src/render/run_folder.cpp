@@ -166,6 +166,10 @@ RunInfo read_run_info(const std::filesystem::path& run_dir) {
     // gap = 0 (90% of the packed height), measured by `analyze` from series.csv.
     if (s.shear_cell->normal_load == NormalLoad::gap && s.shear_cell->gap > 0.0)
       info.parameters.gap = s.shear_cell->gap;
+    // p on the top under pressure loading, unless a drive of the scenario replaces it: the
+    // sigma_n of E~ and c~ (analysis/pressure_loading.h).
+    if (s.shear_cell->normal_load == NormalLoad::pressure && !s.shear_cell->top_drive.axis[1])
+      info.parameters.pressure = s.shear_cell->pressure;
   } else if (s.periodic_x) {
     info.periodic = std::make_pair(s.x_min, s.x_max);
     info.parameters.length = s.x_max - s.x_min;

@@ -96,6 +96,7 @@ AnalyzeResult analyze_run(const fs::path& run_dir, const AnalyzeOptions& options
 
   // Shear cell: window, friction, dimensionless parameters, energy budget.
   report::analyze_shear(r, series, run, options, run_dir);
+  report::read_campaign_request(r, run_dir);
   r.summary.solid_fraction = report::kNan;
   analyze_window_snapshots(r, snaps, run, options, run_dir);
 

@@ -14,7 +14,9 @@
 //   options           -> override any of these
 //
 // Writes RUN_DIR/analysis/summary.json (analysis/summary.h layout, plus "parameters": each
-// run parameter with its value and where it came from, "agglomerates": how they were
+// run parameter with its value and where it came from, "campaign": for a run of a campaign in
+// the papers' coordinates, its name, the run id and each coordinate requested beside the
+// realized one, "agglomerates": how they were
 // detected, "unmeasured": what the run asks for and could not be measured, with the reason,
 // and "notes": what could not be computed and why), RUN_DIR/analysis/profiles.csv,
 // agglomerates.csv (one row per structure) and agglomerate_pdfs.csv, and for a compaction
@@ -74,6 +76,14 @@ struct Unmeasured {
   std::string reason;
 };
 
+// The papers' coordinates (stiffness_tilde, cohesion_tilde, viscosity_tilde) a campaign that
+// varies them requested for this run (campaign/paper_coordinates.h).
+struct CampaignRequest {
+  std::string campaign;  // the campaign folder's name
+  std::string run;       // the run id
+  std::vector<std::pair<std::string, double>> requested;
+};
+
 struct AnalyzeResult {
   AnalysisSummary summary;
   // Not empty: `analyze` exits with kExitUnmeasured (core/exit_status.h), summary.json lists
@@ -94,6 +104,7 @@ struct AnalyzeResult {
   std::string att_layer_source;    // where H came from
   std::filesystem::path att_path;  // empty if none
   std::filesystem::path space_time_path, cylinders_path;  // empty without agglomerates
+  std::optional<CampaignRequest> campaign;  // a campaign's run in the papers' coordinates
 };
 
 struct RunInfo;

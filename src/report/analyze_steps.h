@@ -82,6 +82,11 @@ void analyze_compaction(AnalyzeResult& r, const Series& series, const Compaction
                         std::span<const GrainSnapshot> snapshots,
                         const std::filesystem::path& run_dir);
 
+// --- report/campaign_request.cpp
+// The papers' coordinates a campaign requested for this run (<campaign folder>/
+// paper_coordinates.csv, campaign/paper_coordinates.h), when run_dir is <campaign>/runs/<id>/.
+void read_campaign_request(AnalyzeResult& r, const std::filesystem::path& run_dir);
+
 // --- report/summary_document.cpp
 // summary.json: the quantities, then "run", "parameters", "profile", "agglomerates",
 // "compaction" and "notes".

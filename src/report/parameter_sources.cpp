@@ -36,6 +36,7 @@ void resolve_run_parameters(AnalyzeResult& r, const RunInfo& run, const AnalyzeO
   p.cohesion = pick(r, "cohesion", "force/length", g.cohesion, sv.cohesion, scenario_source);
   p.damping_alpha =
       pick(r, "damping_alpha", "time", g.damping_alpha, sv.damping_alpha, scenario_source);
+  p.pressure = pick(r, "pressure", "stress", g.pressure, sv.pressure, scenario_source);
 }
 
 void resolve_mean_diameter(AnalyzeResult& r, const Snapshots& snaps,

@@ -4,6 +4,7 @@
 #include "analysis/driven_body.h"
 #include "analysis/energy_budget.h"
 #include "analysis/friction.h"
+#include "analysis/pressure_loading.h"
 #include "analysis/steadiness.h"
 #include "analysis/steady_state.h"
 #include "core/error.h"
@@ -87,7 +88,7 @@ TimeWindow choose_window(const Series& series, std::span<const DrivenBody> bodie
 void note_dimensionless_gaps(const AnalyzeResult& r, std::vector<std::string>& notes) {
   const RunParameters& p = r.parameters;
   const AnalysisSummary& s = r.summary;
-  if (std::isfinite(s.friction.mean.normal_stress)) {
+  if (std::isfinite(coordinate_normal_stress(s.imposed_pressure, s.friction.mean.normal_stress))) {
     if (!std::isfinite(p.young_modulus)) notes.push_back("E~ null: E unknown (pass --young)");
     if (!(p.cohesion > 0.0)) notes.push_back("c~ null: cohesion unknown or 0");
   }
@@ -128,7 +129,11 @@ void analyze_shear(AnalyzeResult& r, const Series& series, const RunInfo& run,
   // A shear cell is run to measure its friction: failing to is not a success.
   if ((run.shear_cell || !bodies.empty()) && !std::isfinite(s.friction.mean.mu))
     r.unmeasured.push_back({"mu", why_no_mu});
-  s.dimensionless = compute_dimensionless(r.parameters, s.friction.mean.normal_stress);
+  // Under pressure loading E~ and c~ are the imposed coordinates: sigma_n = p
+  // (analysis/pressure_loading.h); each body's measured sigma_n stays in the summary.
+  s.imposed_pressure = r.parameters.pressure > 0.0 ? r.parameters.pressure : kNan;
+  s.dimensionless = compute_dimensionless(
+      r.parameters, coordinate_normal_stress(s.imposed_pressure, s.friction.mean.normal_stress));
   note_dimensionless_gaps(r, notes);
   try {
     s.energy = compute_energy_budget(series, s.window, s.friction.mean.mu,
@@ -136,9 +141,13 @@ void analyze_shear(AnalyzeResult& r, const Series& series, const RunInfo& run,
   } catch (const Error& e) {
     notes.push_back(std::string("energy budget not computed: ") + e.what());
   }
-  if (!bodies.empty() && std::isfinite(s.friction.mean.mu))
+  if (!bodies.empty() && std::isfinite(s.friction.mean.mu)) {
     s.warnings = check_steadiness(series, s.window, bodies, s.friction, s.energy,
                                   r.parameters.velocity, options.steadiness);
+    if (auto w = check_imposed_pressure(s.friction, s.imposed_pressure,
+                                        options.steadiness.pressure_mismatch))
+      s.warnings.push_back(std::move(*w));
+  }
 }
 
 }  // namespace sg::report

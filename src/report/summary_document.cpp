@@ -24,6 +24,23 @@ std::string summary_document(const AnalyzeResult& r, const fs::path& run_dir) {
     params[p.key] = std::move(q);
   }
   doc["parameters"] = std::move(params);
+  if (r.campaign) {
+    // The requested coordinates beside the realized ones (quantities of the same name).
+    nlohmann::ordered_json c, requested, realized;
+    c["name"] = r.campaign->campaign;
+    c["run"] = r.campaign->run;
+    for (const auto& [key, value] : r.campaign->requested) {
+      requested[key] = std::isfinite(value) ? nlohmann::ordered_json(value) : nullptr;
+      const double v =
+          doc["quantities"].contains(key) && doc["quantities"][key]["value"].is_number()
+              ? doc["quantities"][key]["value"].get<double>()
+              : kNan;
+      realized[key] = std::isfinite(v) ? nlohmann::ordered_json(v) : nullptr;
+    }
+    c["requested"] = std::move(requested);
+    c["realized"] = std::move(realized);
+    doc["campaign"] = std::move(c);
+  }
   if (r.profile) {
     nlohmann::ordered_json prof;
     prof["file"] = "profiles.csv";
