@@ -1,10 +1,10 @@
 """Reading a run folder (``softgrain.open_run``) into NumPy arrays.
 
 Pure Python and NumPy on purpose (zlib is in Python's standard library): the files are CSV,
-VTK XML (ASCII, or binary with zlib-compressed appended data: the default, src/io/vtu_document.h),
-JSON and the TOML-like run.log, and reading them here needs no compiled code, so a run can be
-read on a machine where only the package's Python files are present. The readers follow the house rule
-of the C++ ones (src/render/vtu_reader.h, src/analysis/series.h): columns and arrays are
+VTK XML (ASCII, or binary with zlib-compressed appended data: the default,
+src/io/vtu_document.h), JSON and the TOML-like run.log, and reading them here needs no
+compiled code, so a run can be read on a machine where only the package's Python files are
+present. The readers follow the house rule of the C++ ones (src/render/vtu_reader.h, src/analysis/series.h): columns and arrays are
 looked up by name, and what is not in the expected form is refused with an error naming the
 file, never misread.
 
