@@ -20,10 +20,14 @@
 #   python3-pytest      the Python module's tests (python/tests, run by ctest)
 #   slurm-wlm           a one-node Slurm started by the tests of `softgrain sweep --slurm` (tests/slurm/)
 #   munge               the authentication those Slurm daemons need (a key made per test)
+#   zlib1g-dev          compression of the binary .vtu files and their reader (io/vtu_document.h)
+#   python3-vtk9        VTK's own XML reader (the one ParaView uses), which the tests check
+#                       reads both .vtu encodings (python/tests/test_vtu_formats.py)
 set -euo pipefail
 packages=(cmake g++ make ccache ninja-build libeigen3-dev libcgal-dev libxsimd-dev libtomlplusplus-dev
           libcli11-dev libgtest-dev libbenchmark-dev libcairo2-dev nlohmann-json3-dev python3-matplotlib
-          python3-numpy python3-scipy ffmpeg pybind11-dev python3-dev python3-pytest slurm-wlm munge)
+          python3-numpy python3-scipy ffmpeg pybind11-dev python3-dev python3-pytest slurm-wlm munge
+          zlib1g-dev python3-vtk9)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

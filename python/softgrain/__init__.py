@@ -19,7 +19,7 @@ _os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
 
 from . import errors  # noqa: E402  (the compiled module's error translator imports it)
 from ._softgrain import ENERGY_FIELDS, Scenario, Simulation, __version__  # noqa: E402
-from .campaign import read_campaign, run_scenarios  # noqa: E402
+from .campaign import read_campaign, run_scenarios, submit_scenarios  # noqa: E402
 from .errors import Error, ScenarioError  # noqa: E402
 from .run_reader import Run, RunReadError, open_run  # noqa: E402
 from .scenario_dict import from_dict as _from_dict  # noqa: E402
@@ -42,6 +42,7 @@ __all__ = [
     "read_campaign",
     "resume",
     "run_scenarios",
+    "submit_scenarios",
 ]
 
 

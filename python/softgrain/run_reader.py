@@ -1,9 +1,10 @@
 """Reading a run folder (``softgrain.open_run``) into NumPy arrays.
 
-Pure Python and NumPy on purpose: the files are text (CSV, ASCII VTK XML, JSON, the
-TOML-like run.log), and reading them here needs no compiled code, so a run can be read on a
-machine where only the package's Python files are present. The readers follow the house rule
-of the C++ ones (src/render/vtu_reader.h, src/analysis/series.h): columns and arrays are
+Pure Python and NumPy on purpose (zlib is in Python's standard library): the files are CSV,
+VTK XML (ASCII, or binary with zlib-compressed appended data: the default,
+src/io/vtu_document.h), JSON and the TOML-like run.log, and reading them here needs no
+compiled code, so a run can be read on a machine where only the package's Python files are
+present. The readers follow the house rule of the C++ ones (src/render/vtu_reader.h, src/analysis/series.h): columns and arrays are
 looked up by name, and what is not in the expected form is refused with an error naming the
 file, never misread.
 
@@ -20,8 +21,10 @@ from __future__ import annotations
 
 import json
 import os
+import struct
 import tomllib
 import xml.etree.ElementTree as ElementTree
+import zlib
 from typing import Any, Dict, List, Optional
 
 import numpy as np
@@ -42,35 +45,120 @@ _VTK_TYPES = {
 }
 
 
-def _read_data_array(element: ElementTree.Element, path: str) -> np.ndarray:
-    """One ASCII <DataArray> as a NumPy array, (n, components) when it has several."""
-    if element.get("format", "ascii") != "ascii":
-        raise RunReadError(f"{path}: DataArray '{element.get('Name')}' is not ascii")
+class _Appended:
+    """The raw <AppendedData> block of a binary .vtu: each appended DataArray is VTK's
+    compressed layout at its offset from the byte after '_' (UInt64 header: number of blocks,
+    block size, size of a partial last block or 0, the compressed size of each block; then the
+    zlib blocks). Only what softgrain writes is read: header_type UInt64, vtkZLibDataCompressor.
+    """
+
+    def __init__(self, data: bytes, start: int, root_attributes: Dict[str, str], path: str):
+        self.path = path
+        self.data = data
+        header_type = root_attributes.get("header_type")
+        compressor = root_attributes.get("compressor")
+        if header_type != "UInt64" or compressor != "vtkZLibDataCompressor":
+            raise RunReadError(f"{path}: appended data with header_type '{header_type}' and "
+                               f"compressor '{compressor}'; only UInt64 and "
+                               "vtkZLibDataCompressor are read")
+        self.begin = data.index(b"_", start) + 1
+
+    def _words(self, at: int, count: int, name: str) -> tuple:
+        end = at + 8 * count
+        if end > len(self.data):
+            raise RunReadError(f"{self.path}: DataArray '{name}' is cut short (truncated file)")
+        return struct.unpack_from(f"<{count}Q", self.data, at)
+
+    def bytes(self, offset: int, name: str) -> bytes:
+        at = self.begin + offset
+        blocks, block_size, last_size = self._words(at, 3, name)
+        packed_sizes = self._words(at + 24, blocks, name) if blocks else ()
+        at += 24 + 8 * blocks
+        pieces = []
+        for b, packed in enumerate(packed_sizes):
+            expected = last_size if b + 1 == blocks and last_size else block_size
+            if at + packed > len(self.data):
+                raise RunReadError(f"{self.path}: DataArray '{name}' is cut short "
+                                   "(truncated file)")
+            try:
+                piece = zlib.decompress(self.data[at:at + packed])
+            except zlib.error as error:
+                raise RunReadError(f"{self.path}: DataArray '{name}': block {b}: {error}") \
+                    from error
+            if len(piece) != expected:
+                raise RunReadError(f"{self.path}: DataArray '{name}': block {b} inflates to "
+                                   f"{len(piece)} bytes, expected {expected}")
+            pieces.append(piece)
+            at += packed
+        return b"".join(pieces)
+
+
+def _read_data_array(element: ElementTree.Element, path: str,
+                     appended: Optional[_Appended]) -> np.ndarray:
+    """One <DataArray> (ASCII, or appended binary) as a NumPy array, (n, components) when it
+    has several."""
+    name = element.get("Name")
     dtype = _VTK_TYPES.get(element.get("type", "Float64"))
     if dtype is None:
-        raise RunReadError(f"{path}: DataArray '{element.get('Name')}' has type "
-                           f"'{element.get('type')}'")
-    values = np.array((element.text or "").split(), dtype=np.float64).astype(dtype)
+        raise RunReadError(f"{path}: DataArray '{name}' has type '{element.get('type')}'")
+    format_ = element.get("format", "ascii")
+    if format_ == "ascii":
+        values = np.array((element.text or "").split(), dtype=np.float64).astype(dtype)
+    elif format_ == "appended":
+        if appended is None:
+            raise RunReadError(f"{path}: DataArray '{name}' is appended but the file has no "
+                               "<AppendedData>")
+        raw = appended.bytes(int(element.get("offset", "0")), name)
+        item = np.dtype(dtype).newbyteorder("<")
+        if len(raw) % item.itemsize:
+            raise RunReadError(f"{path}: DataArray '{name}': {len(raw)} bytes of "
+                               f"{element.get('type')}")
+        values = np.frombuffer(raw, dtype=item).astype(dtype)
+    else:
+        raise RunReadError(f"{path}: DataArray '{name}' has format '{format_}'; only ascii "
+                           "and appended are read")
     components = int(element.get("NumberOfComponents", "1"))
     if components > 1:
         if values.size % components:
-            raise RunReadError(f"{path}: DataArray '{element.get('Name')}' holds {values.size} "
+            raise RunReadError(f"{path}: DataArray '{name}' holds {values.size} "
                                f"values, not a multiple of {components} components")
         values = values.reshape(-1, components)
     return values
 
 
+def _parse_vtu(path: str) -> tuple:
+    """The XML root of a .vtu and its appended block (None for an ASCII file). The raw
+    binary after <AppendedData> is not XML: the XML before it is parsed, closed by hand."""
+    try:
+        with open(path, "rb") as file:
+            data = file.read()
+    except OSError as error:
+        raise RunReadError(f"{path}: {error}") from error
+    if not data.rstrip().endswith(b"</VTKFile>"):
+        raise RunReadError(f"{path}: truncated (no closing </VTKFile>)")
+    start = data.find(b"<AppendedData")
+    xml = data if start < 0 else data[:start] + b"</VTKFile>"
+    try:
+        root = ElementTree.fromstring(xml)
+    except ElementTree.ParseError as error:
+        raise RunReadError(f"{path}: {error}") from error
+    if start < 0:
+        return root, None
+    tag = data[start:data.index(b">", start)]
+    if b'encoding="raw"' not in tag:
+        raise RunReadError(f"{path}: <AppendedData> is not encoding=\"raw\"")
+    return root, _Appended(data, start, root.attrib, path)
+
+
 def read_vtu(path: str) -> Dict[str, np.ndarray]:
-    """A .vtu file softgrain wrote, as a dict of NumPy arrays.
+    """A .vtu file softgrain wrote (ASCII or binary), as a dict of NumPy arrays.
 
     Keys: ``points`` (n, 2) (z dropped), ``connectivity``, ``offsets``, ``types`` (the cells,
     as VTK stores them), then every <PointData> array by its name (``point_data`` order kept
-    in ``arrays``). Raises RunReadError naming the file on anything unexpected.
+    in ``arrays``). Both encodings give the same arrays, bit for bit. Raises RunReadError
+    naming the file on anything unexpected.
     """
-    try:
-        root = ElementTree.parse(path).getroot()
-    except (OSError, ElementTree.ParseError) as error:
-        raise RunReadError(f"{path}: {error}") from error
+    root, appended = _parse_vtu(path)
     piece = root.find("UnstructuredGrid/Piece")
     if piece is None:
         raise RunReadError(f"{path}: no UnstructuredGrid/Piece")
@@ -80,18 +168,18 @@ def read_vtu(path: str) -> Dict[str, np.ndarray]:
     points_array = piece.find("Points/DataArray")
     if points_array is None:
         raise RunReadError(f"{path}: no Points")
-    points = _read_data_array(points_array, path).reshape(-1, 3)
+    points = _read_data_array(points_array, path, appended).reshape(-1, 3)
     if len(points) != n_points:
         raise RunReadError(f"{path}: {len(points)} points, NumberOfPoints says {n_points}")
     result["points"] = points[:, :2].copy()
     for array in piece.findall("Cells/DataArray"):
-        result[array.get("Name", "")] = _read_data_array(array, path)
+        result[array.get("Name", "")] = _read_data_array(array, path, appended)
     if "types" in result and len(result["types"]) != n_cells:
         raise RunReadError(f"{path}: {len(result['types'])} cell types, NumberOfCells says "
                            f"{n_cells}")
     for array in piece.findall("PointData/DataArray"):
         name = array.get("Name", "")
-        values = _read_data_array(array, path)
+        values = _read_data_array(array, path, appended)
         if len(values) != n_points:
             raise RunReadError(f"{path}: point array '{name}' has {len(values)} entries for "
                                f"{n_points} points")

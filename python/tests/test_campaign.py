@@ -2,7 +2,7 @@
 and the table `softgrain sweep` gathers read as NumPy arrays."""
 
 import csv
-import copy
+import pathlib
 import subprocess
 
 import numpy as np
@@ -76,3 +76,57 @@ def test_the_sweep_table_as_arrays(cli, tmp_path):
             assert (np.isnan(table[name][0]) and cell == "") or table[name][0] == float(cell)
         else:
             assert table[name][0] == cell
+
+
+def test_the_cluster_path_writes_the_campaign_and_its_job_script(cli, tmp_path):
+    """run_scenarios(..., slurm=..., dry_run=True): the campaign sweep --slurm would submit,
+    written and checked by the command line, without a scheduler (the submission itself runs
+    against a real one-node Slurm: python/tests_slurm)."""
+    scenarios = [tiny("stiff", 20.0), tiny("soft", 10.0)]
+    soft = scenarios[1].to_dict()
+    soft["contact_laws"][0]["cohesion"] = 0.2
+    scenarios[1] = softgrain.Scenario.from_dict(soft)
+    result = softgrain.run_scenarios(scenarios, tmp_path / "study", threads=2,
+                                     slurm={"partition": "compute", "time": "00:30:00"},
+                                     executable=cli, dry_run=True)
+    assert result["job_id"] is None
+    folder = tmp_path / "study"
+    assert result["folder"] == str(folder)
+    script = (folder / "slurm-array.sh").read_text()
+    assert "#SBATCH --partition=compute" in script and "--time=00:30:00" in script
+    assert "--array=0-1" in script and "--cpus-per-task=2" in script
+    ids = (folder / "runs.txt").read_text().split()
+    assert list(result["runs"]) == ["stiff", "soft"]
+    assert [pathlib.Path(p).name for p in result["runs"].values()] == ids
+    # Each run's scenario is the scenario given, values and all (only name and directory
+    # are the campaign's).
+    for scenario, run in zip(scenarios, result["runs"].values()):
+        written = softgrain.Scenario.from_file(pathlib.Path(run) / "scenario.toml").to_dict()
+        given = scenario.to_dict()
+        for d in (written, given):
+            d.pop("name")
+            d.get("output", {}).pop("directory", None)
+        assert written == given
+    # Submitting again changes nothing that was written.
+    again = softgrain.run_scenarios(scenarios, tmp_path / "study", threads=2,
+                                    slurm={"partition": "compute", "time": "00:30:00"},
+                                    executable=cli, dry_run=True)
+    assert again["runs"] == result["runs"]
+
+
+def test_the_cluster_path_refuses_what_a_campaign_cannot_hold(cli, tmp_path):
+    one, other = tiny("one", 10.0), tiny("other", 10.0)
+    with pytest.raises(softgrain.Error, match="differ only in their names"):
+        softgrain.run_scenarios([one, other], tmp_path / "s", slurm={}, executable=cli,
+                                dry_run=True)
+    d = other.to_dict()
+    d["materials"].append({**d["materials"][0], "name": "extra"})
+    with pytest.raises(softgrain.Error, match=r"differ in structure \(key 'materials\.2\."):
+        softgrain.run_scenarios([one, softgrain.Scenario.from_dict(d)], tmp_path / "s",
+                                slurm={}, executable=cli, dry_run=True)
+    with pytest.raises(softgrain.Error, match="slurm.time"):
+        softgrain.run_scenarios([one, tiny("two", 20.0)], tmp_path / "s",
+                                slurm={"time": "twelve hours"}, executable=cli, dry_run=True)
+    with pytest.raises(softgrain.Error, match="executable"):
+        softgrain.run_scenarios([one, tiny("two", 20.0)], tmp_path / "s", slurm={},
+                                executable=tmp_path / "none", dry_run=True)

@@ -3,6 +3,8 @@ files themselves (values, counts, names and sizes read from the text independent
 
 import re
 import shutil
+import struct
+import zlib
 
 import numpy as np
 import pytest
@@ -15,6 +17,28 @@ def data_array_names(vtu_text, section):
     """The Name attributes of the DataArrays of one section (<PointData>, <Cells>)."""
     block = re.search(rf"<{section}[^>]*>(.*?)</{section}>", vtu_text, re.DOTALL).group(1)
     return re.findall(r'<DataArray[^>]*Name="([^"]+)"', block)
+
+
+def xml_part(vtu_bytes):
+    """The XML of a .vtu as text: all of an ASCII file, the part before the binary data of a
+    binary one."""
+    return vtu_bytes.split(b"<AppendedData")[0].decode("utf-8")
+
+
+def first_point(vtu_bytes):
+    """(x, y) of the first point, decoded here from the file itself: the text of an ASCII
+    file, or the first zlib block of the Points array of a binary one (VTK's layout: a UInt64
+    header of 3 + blocks words, then the blocks)."""
+    text = xml_part(vtu_bytes)
+    ascii_ = re.search(r"<Points>\s*<DataArray[^>]*format=\"ascii\"[^>]*>\s*(\S+)\s+(\S+)", text)
+    if ascii_:
+        return float(ascii_.group(1)), float(ascii_.group(2))
+    offset = int(re.search(r'<Points>\s*<DataArray[^>]*offset="(\d+)"', text).group(1))
+    at = vtu_bytes.index(b"_", vtu_bytes.index(b"<AppendedData")) + 1 + offset
+    blocks = struct.unpack_from("<Q", vtu_bytes, at)[0]
+    packed = struct.unpack_from("<Q", vtu_bytes, at + 24)[0]
+    start = at + 24 + 8 * blocks
+    return struct.unpack_from("<2d", zlib.decompress(vtu_bytes[start:start + packed]))
 
 
 def test_series_is_the_csv_column_by_column(cli_run):
@@ -44,7 +68,8 @@ def test_snapshots_fields_contacts_grains(cli_run):
     assert len(times) == 4  # t = 0, 0.1, 0.2 and the final 0.3
     files = re.findall(r'file="([^"]+)"', pvd)
     for i in (0, len(files) - 1, -1):
-        text = (folder / files[i]).read_text()
+        data = (folder / files[i]).read_bytes()
+        text = xml_part(data)
         fields = run.fields(i)
         n = int(re.search(r'NumberOfPoints="(\d+)"', text).group(1))
         cells = int(re.search(r'NumberOfCells="(\d+)"', text).group(1))
@@ -57,14 +82,14 @@ def test_snapshots_fields_contacts_grains(cli_run):
             assert name in fields
             assert len(fields[name]) == n
         assert fields["velocity"].shape == (n, 3)
-        # The first point's coordinates, as written.
-        first = re.search(r"<Points>\s*<DataArray[^>]*>\s*(\S+)\s+(\S+)", text)
-        assert fields["points"][0, 0] == float(first.group(1))
-        assert fields["points"][0, 1] == float(first.group(2))
+        # The first point's coordinates, as written (binary by default).
+        first = first_point(data)
+        assert fields["points"][0, 0] == first[0]
+        assert fields["points"][0, 1] == first[1]
 
     contacts = run.contacts(-1)
     contacts_file = re.findall(r'file="([^"]+)"', (folder / "contacts.pvd").read_text())[-1]
-    text = (folder / contacts_file).read_text()
+    text = xml_part((folder / contacts_file).read_bytes())
     n = int(re.search(r'NumberOfPoints="(\d+)"', text).group(1))
     assert n > 0  # the grains touch at the end of the compaction's start
     for name in data_array_names(text, "PointData"):

@@ -12,14 +12,16 @@
 #include <span>
 
 #include "contact/contact_system.h"
+#include "scenario/scenario.h"  // FieldFormat
 
 namespace sg {
 
 // `contour_velocity`: compute_contour_velocities at the instant of the contacts' evaluation;
 // `global_strain_rate`: V/D (NaN: contact_rate in 1/time). The model gives body and contour
-// ranges only.
+// ranges only. `format`: the encoding of the arrays, as the fields' (io/vtu_document.h).
 void write_contact_snapshot(const ContactSystem& contacts, const Model& model,
                             std::span<const Vec2> contour_velocity, double global_strain_rate,
-                            const std::filesystem::path& path);
+                            const std::filesystem::path& path,
+                            FieldFormat format = FieldFormat::binary);
 
 }  // namespace sg

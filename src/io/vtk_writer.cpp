@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "io/atomic_file.h"
+#include "io/vtu_document.h"
 #include "model/kinematics.h"
 #include "scenario/scenario.h"
 
@@ -115,22 +116,6 @@ NodalFields evaluate_fields(const Model& model, double global_strain_rate,
   return f;
 }
 
-template <typename Get>
-void scalar_array(std::ostream& out, const char* name, std::size_t n, Get&& get) {
-  out << "        <DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
-  for (std::size_t i = 0; i < n; ++i)
-    out << get(i) << (i % 8 == 7 ? '\n' : ' ');
-  out << "\n        </DataArray>\n";
-}
-
-void vector_array(std::ostream& out, const char* name, const std::vector<Vec2>& v) {
-  out << "        <DataArray type=\"Float64\" Name=\"" << name
-      << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for (std::size_t i = 0; i < v.size(); ++i)
-    out << v[i].x() << ' ' << v[i].y() << " 0" << (i % 4 == 3 ? '\n' : ' ');
-  out << "\n        </DataArray>\n";
-}
-
 }  // namespace
 
 double global_strain_rate(const ScenarioDef& scenario) {
@@ -158,71 +143,58 @@ std::vector<int> contour_point_field_index(const Model& model) {
   return index;
 }
 
-void write_vtu_snapshot(const Model& model, const std::filesystem::path& path,
-                        double global_strain_rate, const StrainInterval& interval) {
-  const NodalFields f = evaluate_fields(model, global_strain_rate, interval);
-  const std::size_t n = f.position.size();
-  // Cells: the triangles of deformable bodies, then one polygon per rigid body (its contour
-  // points follow the field nodes in the point list).
-  std::vector<std::vector<std::size_t>> polygons;
-  std::size_t next_point = model.node_count();
+// The cells: the triangles of deformable bodies, then one polygon per rigid body (its contour
+// points follow the field nodes in the point list).
+std::vector<VtuDataArray> cell_arrays(const Model& model) {
+  VtuDataArray connectivity{"connectivity", VtkType::int32, 1, {}};
+  VtuDataArray offsets{"offsets", VtkType::int32, 1, {}};
+  VtuDataArray types{"types", VtkType::uint8, 1, {}};
+  for (const auto& t : model.triangles) {
+    connectivity.values.insert(connectivity.values.end(),
+                               {double(t[0]), double(t[1]), double(t[2])});
+    offsets.values.push_back(static_cast<double>(connectivity.values.size()));
+    types.values.push_back(5);  // VTK_TRIANGLE
+  }
+  auto next_point = static_cast<double>(model.node_count());
   for (const Body& body : model.bodies) {
     if (body.kind != BodyKind::rigid) continue;
-    std::vector<std::size_t> poly;
     for (int k = 0; k < body.contour_count(); ++k)
-      poly.push_back(next_point++);
-    polygons.push_back(std::move(poly));
+      connectivity.values.push_back(next_point++);
+    offsets.values.push_back(static_cast<double>(connectivity.values.size()));
+    types.values.push_back(7);  // VTK_POLYGON
   }
-  const std::size_t cells = model.triangles.size() + polygons.size();
-  write_file_atomically(path, [&](std::ostream& out) {
-    out << std::setprecision(9);
-    out << "<?xml version=\"1.0\"?>\n"
-           "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-           "  <UnstructuredGrid>\n"
-        << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << cells << "\">\n"
-        << "      <Points>\n";
-    vector_array(out, "position", f.position);
-    out << "      </Points>\n      <Cells>\n"
-           "        <DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n";
-    for (const auto& t : model.triangles)
-      out << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
-    for (const auto& poly : polygons) {
-      for (std::size_t p : poly)
-        out << p << ' ';
-      out << '\n';
-    }
-    out << "        </DataArray>\n"
-           "        <DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n";
-    std::size_t offset = 0;
-    for (std::size_t c = 0; c < model.triangles.size(); ++c) {
-      offset += 3;
-      out << offset << (c % 16 == 15 ? '\n' : ' ');
-    }
-    for (const auto& poly : polygons)
-      out << (offset += poly.size()) << ' ';
-    out << "\n        </DataArray>\n"
-           "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-    for (std::size_t c = 0; c < model.triangles.size(); ++c)
-      out << "5" << (c % 32 == 31 ? '\n' : ' ');  // VTK_TRIANGLE
-    for (std::size_t c = 0; c < polygons.size(); ++c)
-      out << "7 ";  // VTK_POLYGON
-    out << "\n        </DataArray>\n      </Cells>\n"
-           "      <PointData Scalars=\"von_mises\" Vectors=\"velocity\">\n";
-    vector_array(out, "displacement", f.displacement);
-    vector_array(out, "velocity", f.velocity);
-    scalar_array(out, "sigma_xx", n, [&](std::size_t i) { return f.stress[i].xx; });
-    scalar_array(out, "sigma_yy", n, [&](std::size_t i) { return f.stress[i].yy; });
-    scalar_array(out, "sigma_xy", n, [&](std::size_t i) { return f.stress[i].xy; });
-    scalar_array(out, "von_mises", n, [&](std::size_t i) { return f.stress[i].von_mises(); });
-    scalar_array(out, "pressure", n, [&](std::size_t i) { return f.stress[i].pressure(); });
-    scalar_array(out, "green_lagrange_norm", n, [&](std::size_t i) { return f.strain_norm[i]; });
-    scalar_array(out, "strain_rate", n, [&](std::size_t i) { return f.strain_rate[i]; });
-    scalar_array(out, "strain_rate_instant", n,
-                 [&](std::size_t i) { return f.strain_rate_instant[i]; });
-    scalar_array(out, "body_id", n, [&](std::size_t i) { return f.body_id[i]; });
-    scalar_array(out, "material_id", n, [&](std::size_t i) { return f.material_id[i]; });
-    out << "      </PointData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
-  });
+  return {std::move(connectivity), std::move(offsets), std::move(types)};
+}
+
+void write_vtu_snapshot(const Model& model, const std::filesystem::path& path,
+                        double global_strain_rate, const StrainInterval& interval,
+                        FieldFormat format) {
+  const NodalFields f = evaluate_fields(model, global_strain_rate, interval);
+  const std::size_t n = f.position.size();
+  VtuDocument doc;
+  doc.point_count = n;
+  doc.points = vector_data_array("position", n, [&](std::size_t i) { return f.position[i]; });
+  doc.cells = cell_arrays(model);
+  doc.cell_count = doc.cells[2].values.size();
+  doc.point_data_attributes = "Scalars=\"von_mises\" Vectors=\"velocity\"";
+  auto scalar = [&](const char* name, auto&& get) {
+    doc.point_data.push_back(scalar_data_array(name, VtkType::float64, n, get));
+  };
+  doc.point_data.push_back(
+      vector_data_array("displacement", n, [&](std::size_t i) { return f.displacement[i]; }));
+  doc.point_data.push_back(
+      vector_data_array("velocity", n, [&](std::size_t i) { return f.velocity[i]; }));
+  scalar("sigma_xx", [&](std::size_t i) { return f.stress[i].xx; });
+  scalar("sigma_yy", [&](std::size_t i) { return f.stress[i].yy; });
+  scalar("sigma_xy", [&](std::size_t i) { return f.stress[i].xy; });
+  scalar("von_mises", [&](std::size_t i) { return f.stress[i].von_mises(); });
+  scalar("pressure", [&](std::size_t i) { return f.stress[i].pressure(); });
+  scalar("green_lagrange_norm", [&](std::size_t i) { return f.strain_norm[i]; });
+  scalar("strain_rate", [&](std::size_t i) { return f.strain_rate[i]; });
+  scalar("strain_rate_instant", [&](std::size_t i) { return f.strain_rate_instant[i]; });
+  scalar("body_id", [&](std::size_t i) { return f.body_id[i]; });
+  scalar("material_id", [&](std::size_t i) { return f.material_id[i]; });
+  write_file_atomically(path, [&](std::ostream& out) { write_vtu_document(doc, format, out); });
 }
 
 void PvdCollection::add(double time, const std::string& relative_file) {

@@ -1,7 +1,9 @@
 #pragma once
 // ParaView output: one VTK XML UnstructuredGrid (.vtu) per snapshot, and a .pvd collection
-// indexing them by time. Each deformable body is drawn as its triangulation in the current
-// configuration, with nodal fields evaluated from the MLS rows at the nodes:
+// indexing them by time. The arrays are zlib-compressed binary appended data by default, text
+// on request ([output] field_format; the encodings: io/vtu_document.h). Each deformable body is
+// drawn as its triangulation in the current configuration, with nodal fields evaluated from the MLS
+// rows at the nodes:
 //   displacement, velocity (physical, not the MLS parameters), sigma_xx, sigma_yy, sigma_xy,
 //   von_mises, pressure (Cauchy, plane strain), green_lagrange_norm |E|, strain_rate,
 //   strain_rate_instant, body_id, material_id.
@@ -25,10 +27,7 @@
 #include <vector>
 
 #include "model/model.h"
-
-namespace sg {
-struct ScenarioDef;
-}
+#include "scenario/scenario.h"  // FieldFormat
 
 namespace sg {
 
@@ -46,11 +45,13 @@ struct StrainInterval {
   double length = 0.0;  // t_k - t_(k-1)
 };
 
-// Writes `path` (.vtu) atomically. global_strain_rate: the unit of strain_rate (V/D of the
-// run's shear cell); NaN: strain_rate in 1/time.
+// Writes `path` (.vtu) atomically, its arrays compressed binary or text (io/vtu_document.h).
+// global_strain_rate: the unit of strain_rate (V/D of the run's shear cell); NaN: strain_rate
+// in 1/time.
 void write_vtu_snapshot(const Model& model, const std::filesystem::path& path,
                         double global_strain_rate = std::numeric_limits<double>::quiet_NaN(),
-                        const StrainInterval& interval = {});
+                        const StrainInterval& interval = {},
+                        FieldFormat format = FieldFormat::binary);
 
 // The index in a snapshot's point list of every contour point (Model::contour_body order):
 // a deformable body's contour point is its boundary node, a rigid body's contour points

@@ -1,9 +1,12 @@
 #pragma once
-// A reader for the VTK XML files softgrain itself writes (io/vtk_writer.h): ASCII
-// UnstructuredGrid (.vtu) snapshots and their .pvd time index. Not a general VTK reader:
-// it understands format="ascii" DataArrays in <Points>, <Cells> and <PointData>, and
-// refuses anything else (binary or appended data, a count that does not match) with an
-// error naming the file, so that a format change is caught, not misread.
+// A reader for the VTK XML files softgrain itself writes (io/vtk_writer.h, io/contact_vtk.h):
+// UnstructuredGrid (.vtu) snapshots and their .pvd time index. Not a general VTK reader: it
+// understands the two encodings of io/vtu_document.h, format="ascii" DataArrays and
+// format="appended" ones in raw <AppendedData> compressed by zlib with UInt64 headers, in
+// <Points>, <Cells> and <PointData>, and refuses anything else (base64, another compressor
+// or header type, a count that does not match, a truncated block) with an error naming the
+// file, so that a format change is caught, not misread. Both encodings read back to the same
+// doubles (the text is the shortest exact decimal).
 #include <filesystem>
 #include <span>
 #include <string>

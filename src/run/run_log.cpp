@@ -23,7 +23,9 @@ void write_parameters(std::ostream& out, const ScenarioDef& s) {
       << "\"\nimex_tolerance = " << s.imex_tolerance
       << "\nimex_refactor_threshold = " << s.imex_refactor_threshold
       << "\n\n[output]\nseries_period = " << s.series_period
-      << "\nfield_period = " << s.field_period << "\ncheckpoint_period = " << s.checkpoint_period
+      << "\nfield_period = " << s.field_period << "\nfield_format = \""
+      << (s.field_format == FieldFormat::ascii ? "ascii" : "binary")
+      << "\"\ncheckpoint_period = " << s.checkpoint_period
       << "\n\n[discretization]\nnode_spacing = " << s.discretization.mesh.spacing
       << "\nmls_neighbours = " << s.discretization.mls.neighbours
       << "\nmls_support_factor = " << s.discretization.mls.support_factor

@@ -96,7 +96,8 @@ void SnapshotOutput::write_state_files(double time) {
   pending_time_ = time;
   pending_norm_ = nodal_strain_norms(model);
   const StrainInterval interval{loop.strain_snapshot_norm, time - loop.strain_snapshot_time};
-  write_vtu_snapshot(model, dir / "fields" / snapshot_name("vtu"), strain_rate_unit_, interval);
+  write_vtu_snapshot(model, dir / "fields" / snapshot_name("vtu"), strain_rate_unit_, interval,
+                     context_.scenario.field_format);
   write_grain_snapshot(model, dir / "grains" / snapshot_name("csv"));
   if (context_.simulation.contacts) compute_contour_velocities(model, contour_velocity_);
 }
@@ -110,7 +111,8 @@ void SnapshotOutput::add_to_collections(double time) {
   loop.strain_snapshot_norm.swap(pending_norm_);
   if (const ContactSystem* contacts = context_.simulation.contacts.get()) {
     write_contact_snapshot(*contacts, context_.simulation.model, contour_velocity_,
-                           strain_rate_unit_, context_.folder.dir / "contacts" / name);
+                           strain_rate_unit_, context_.folder.dir / "contacts" / name,
+                           context_.scenario.field_format);
     contacts_pvd_.add(time, "contacts/" + name);
     loop.contact_entries = contacts_pvd_.entries();
   }

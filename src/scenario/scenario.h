@@ -25,6 +25,10 @@ namespace sg {
 // A grain is a disc, an ellipse or any simple closed contour (points inline or from a CSV).
 enum class GrainShape { disc, ellipse, contour };
 
+// [output] field_format: how the .vtu files of fields/ and contacts/ hold their arrays
+// (io/vtu_document.h): zlib-compressed binary appended data (the default) or text.
+enum class FieldFormat { binary, ascii };
+
 struct GrainSpec {
   std::string name;
   GrainShape shape = GrainShape::disc;
@@ -90,6 +94,7 @@ struct ScenarioDef {
   std::filesystem::path output_root = "out";
   double series_period = 0.0;  // time between rows of series.csv (0: 1/200 of duration)
   double field_period = 0.0;   // time between VTK snapshots (0: 1/20 of duration)
+  FieldFormat field_format = FieldFormat::binary;
   // Time between checkpoints <run>/checkpoint.bin (io/checkpoint.h); 0: none; < 0 (the key
   // is absent): 1/10 of the duration, resolved at load.
   double checkpoint_period = -1.0;

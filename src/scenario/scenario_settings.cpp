@@ -34,10 +34,13 @@ void read_time(const TomlReader& root, ScenarioDef& s) {
 
 void read_output(const TomlReader& root, ScenarioDef& s) {
   if (auto t = root.table("output")) {
-    t->reject_unknown_keys({"directory", "series_period", "field_period", "checkpoint_period"});
+    t->reject_unknown_keys(
+        {"directory", "series_period", "field_period", "checkpoint_period", "field_format"});
     s.output_root = t->string("directory", "out");
     s.series_period = t->non_negative("series_period", 0.0);
     s.field_period = t->non_negative("field_period", 0.0);
+    if (t->one_of("field_format", {"binary", "ascii"}, "binary") == "ascii")
+      s.field_format = FieldFormat::ascii;
     if (t->has("checkpoint_period"))
       s.checkpoint_period = t->non_negative("checkpoint_period", 0.0);
   }

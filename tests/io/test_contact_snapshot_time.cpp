@@ -6,6 +6,8 @@
 // step control rolled back is taken again, not kept from the rejected trajectory.
 // (Written before the step, the network showed the previous step's force evaluation: empty
 // at t = 0, one step of travel behind the fields elsewhere.)
+// The scenes write their .vtu as text (field_format = "ascii"), which this module (below the
+// render stage and its reader) parses itself.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -213,6 +215,7 @@ duration = 0.1
 [output]
 series_period = 0.01
 field_period = 0.03
+field_format = "ascii"
 )") + scenes::kTinyScenarioBody +
          R"(
 [[grains]]
@@ -274,6 +277,7 @@ step_tolerance = 0.0006
 [output]
 series_period = 0.002
 field_period = 0.001
+field_format = "ascii"
 checkpoint_period = 0
 )") + scenes::kTinyScenarioBody +
                            scenes::kSeamGrains;
