@@ -237,7 +237,7 @@ struct ContactTraction {
 // previous evaluation (where it still carried -k g_prev) and the trial state of this one,
 // not 1/2 k g_trial^2. The explicit scheme does the trapezoidal work
 // -1/2 (f_prev + f_now) (g_trial - g_prev) over the increment (the same pairing that makes
-// the kinetic energy 1/2 v_n-1/2 . v_n+1/2 close the balance, see explicit_solver.h); with
+// the kinetic energy 1/2 v_n-1/2 . v_n+1/2 close the balance, see stepper.h); with
 // f_now = 0 after the release, 1/2 k g_prev g_trial is exactly the energy the discrete
 // system gives up, and it tends to the continuous 1/2 k g_c^2 as the step goes to zero.
 // With 1/2 k g_trial^2 instead, a bond loaded at v dt >> g_c per step (the papers' cohesion

@@ -28,7 +28,7 @@ namespace sg {
 
 // 6: node drives' servo loads (NodeDrive::load, load_damping) enter the model hash.
 // 7: the solver's previous step (SolverState::previous_dt) and the ledger's step_change
-//    (variable-step central difference, solver/explicit_solver.h).
+//    (variable-step central difference, solver/stepper.h).
 // 8: contact histories carry the damage laws' and contact damping's state (previous
 //    tractions, stored energy, viscous tractions, damage, intact / unloading flags).
 // 9: the run loop's last field snapshot (time and nodal strain norms), from which the next

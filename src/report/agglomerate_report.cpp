@@ -2,10 +2,10 @@
 #include <cmath>
 
 #include "analysis/agglomerate_statistics.h"
+#include "analysis/coherence_frames.h"
 #include "analysis/structure_cylinders.h"
 #include "core/error.h"
 #include "io/atomic_file.h"
-#include "analysis/coherence_frames.h"
 #include "report/analyze_steps.h"
 
 namespace sg::report {

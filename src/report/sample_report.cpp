@@ -315,8 +315,7 @@ void measure_step(const ScenarioDef& scenario, Model& model, SampleReport& r) {
       model, scenario.time_step_safety, contact_stiffness, integrator_params(scenario));
   r.stable_step = stable.dt;
   r.damping_limited = stable.damping_limited;
-  if (stable.limiting_body >= 0)
-    r.limiting_body = model.bodies[static_cast<std::size_t>(stable.limiting_body)].name;
+  if (stable.limiting_body >= 0) r.limiting_body = model.body(stable.limiting_body).name;
   if (stable.dt > 0.0) r.steps = static_cast<long>(scenario.duration / stable.dt);
   const double bytes = static_cast<double>(model.node_count()) * 12 * sizeof(double) +
                        static_cast<double>(model.gauss_rows.entries()) * (4 * sizeof(double) + 4) +

@@ -81,8 +81,7 @@ struct SlidingBlocks {
   double tributary(int k) const {
     std::vector<Vec2> x;
     compute_contour_positions(model, x);
-    const Body& b =
-        model.bodies[static_cast<std::size_t>(model.contour_body[static_cast<std::size_t>(k)])];
+    const Body& b = model.body(model.contour_body[static_cast<std::size_t>(k)]);
     const int n = b.contour_count(), i = k - b.contour_begin;
     const Vec2& p = x[static_cast<std::size_t>(k)];
     const Vec2& prev = x[static_cast<std::size_t>(b.contour_begin + (i + n - 1) % n)];

@@ -36,7 +36,7 @@ Model make_scene() {
   model.add_rigid_body("rigid", make_disc(Vec2(0.0, -0.15), 0.2, h), m);
   // The right disc moves +x through the seam at x = 1.5, the left one -x: they meet across it.
   for (const auto& [body, vx] : {std::pair{right, 2.0}, std::pair{left, -1.0}}) {
-    const Body& b = model.bodies[static_cast<std::size_t>(body)];
+    const Body& b = model.body(body);
     for (int i = b.node_begin; i < b.node_end; ++i) {
       model.nodes.vx[static_cast<std::size_t>(i)] = vx;
       model.nodes.vy[static_cast<std::size_t>(i)] = -0.5;
