@@ -31,7 +31,7 @@ if [[ "${SOFTGRAIN_SANITIZE_PASS:-$default_pass}" != 1 ]]; then exit 0; fi
 asan=${SOFTGRAIN_ASAN_BUILD_DIR:-build-asan}
 # The modules whose tests take seconds (the solver, scenario and render suites run whole
 # simulations: minutes under the sanitizers), and the fuzzer.
-fast_modules=(test_geometry test_meshfree test_material test_model test_contact test_io
+fast_modules=(test_geometry test_meshfree test_material test_model test_contact test_io test_run
               test_analysis test_campaign)
 # shellcheck disable=SC2046
 cmake -S . -B "$asan" $(generator_args "$asan") "${cmake_configure_args[@]}" \
@@ -45,7 +45,8 @@ labels=$(IFS='|'; echo "fuzz|odr|${fast_modules[*]}")
 # already cover (whole campaigns with their figures, the largest packing); each took minutes
 # under ASan, together about 4 of the pass's 11 CPU minutes.
 slow_under_sanitizers=('CampaignPlan\.ProjectedWallTime' 'PaperCampaign\.ATinyCampaign'
-                       'Packing\.Paper003Mixture')
+                       'Packing\.Paper003Mixture' 'PressureExamples\.TheServoLoads'
+                       'PressureExamples\.TheExampleCampaignsPlan')
 excluded=$(IFS='|'; echo "${slow_under_sanitizers[*]}")
 ASAN_OPTIONS=abort_on_error=1:detect_leaks=1 \
   UBSAN_OPTIONS=halt_on_error=1:abort_on_error=1:print_stacktrace=1 \

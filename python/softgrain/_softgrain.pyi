@@ -28,8 +28,9 @@ class Scenario:
         """The scenario's keys as a new dict."""
     def to_toml(self) -> str:
         """The scenario as TOML text; from_toml of it builds the same model."""
-    def info(self) -> Dict[str, Any]:
-        """What `softgrain info` prints, as a dict (builds the model)."""
+    def info(self, timing: bool = True) -> Dict[str, Any]:
+        """What `softgrain info` prints, as a dict (builds the model); with timing and a
+        damped body, 'integrators': each integrator's stable step and measured cost."""
     @property
     def name(self) -> str:
         """The run name (the run folder is <output root>/<name>)."""

@@ -12,6 +12,7 @@
 #include "bindings.h"
 #include "model/force_kernel.h"
 #include "run/simulation.h"
+#include "solver/integrator_comparison.h"
 
 namespace sg::python {
 
@@ -39,9 +40,40 @@ Scenario from_file(const std::filesystem::path& file) {
 }
 
 // What `softgrain info` prints (app/commands/info_command.cpp), as a dict; the model is built
-// as `run` builds it (run/simulation.h: contacts, mass scaling, the first step estimate),
-// without the integrators' timing.
-py::dict info(const Scenario& s) {
+// as `run` builds it (run/simulation.h: contacts, mass scaling, the first step estimate).
+// With `timing` and a damped body, both integrators' step and measured cost, as the command
+// line prints them (solver/integrator_comparison.h; the model is left as it was).
+py::list integrator_costs(Simulation& sim, const ScenarioDef& def) {
+  const IntegratorParams configured = integrator_params(def);
+  const double contact_stiffness = sim.contacts ? sim.contacts->max_stiffness() : 0.0;
+  std::array<IntegratorCost, 2> costs;
+  {
+    py::gil_scoped_release release;
+    costs = compare_integrators(sim.model, sim.contacts.get(), def.time_step_safety,
+                                contact_stiffness, configured, 10);
+  }
+  py::list out;
+  for (const IntegratorCost& c : costs) {
+    py::dict d;
+    d["integrator"] = c.integrator.name();
+    d["stable_step"] = c.stable.dt;
+    d["step_limit"] = c.stable.damping_limited ? "damping-limited" : "wave-speed-limited";
+    d["seconds_per_step"] = c.seconds_per_step;
+    d["seconds_per_time_unit"] = c.seconds_per_step / c.stable.dt;
+    d["hours_for_duration"] = c.seconds_per_step / c.stable.dt * def.duration / 3600.0;
+    d["configured"] = c.integrator.implicit_viscosity == configured.implicit_viscosity;
+    out.append(d);
+  }
+  return out;
+}
+
+bool has_damped_body(const Model& model) {
+  for (std::size_t b = 0; b < model.bodies.size(); ++b)
+    if (model.is_damped(static_cast<BodyId>(b))) return true;
+  return false;
+}
+
+py::dict info(const Scenario& s, bool timing) {
   std::unique_ptr<Simulation> sim;
   {
     py::gil_scoped_release release;
@@ -77,6 +109,8 @@ py::dict info(const Scenario& s) {
   // The checkpoint fingerprint: equal hashes, same model and run settings.
   d["model_hash"] = sim->fingerprint.model_hash;
   d["settings_hash"] = sim->fingerprint.settings_hash;
+  if (timing && stable.limiting_body >= 0 && has_damped_body(model))
+    d["integrators"] = integrator_costs(*sim, s.def);
   return d;
 }
 
@@ -98,10 +132,13 @@ Errors raise softgrain.ScenarioError with file, line, key and detail.)")
           "to_toml", [](const Scenario& s) { return s.toml; },
           "The TOML text the scenario was read from: the file as written (comments kept), or "
           "the text from_dict wrote; from_toml of it (with base_dir) builds the same model.")
-      .def("info", &info,
+      .def("info", &info, py::arg("timing") = true,
            "What `softgrain info` prints, as a dict: bodies, field nodes, Gauss points, stable "
            "and first step, steps, memory, force kernel, and the checkpoint fingerprint's "
-           "model_hash and settings_hash. Builds the model (seconds for large scenarios).")
+           "model_hash and settings_hash. Builds the model (seconds for large scenarios). "
+           "With timing and a damped body, 'integrators': for the explicit and the IMEX "
+           "integrator, the stable step, its limit, the measured seconds per step (10 steps) "
+           "and per time unit, the hours for the duration, and which one [time] configures.")
       .def_property_readonly(
           "name", [](const Scenario& s) { return s.def.name; },
           "The run name (the run folder is <output root>/<name>).")

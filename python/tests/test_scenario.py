@@ -9,7 +9,7 @@ from conftest import EXAMPLES
 
 
 def fingerprint(scenario):
-    info = scenario.info()
+    info = scenario.info(timing=False)
     return info["model_hash"], info["settings_hash"]
 
 
@@ -52,6 +52,19 @@ def test_info_is_what_softgrain_info_prints():
     assert info["field_nodes"] > 0 and info["gauss_points"] > info["field_nodes"]
     assert 0 < info["stable_step"] < 0.01
     assert info["integrator"] == "explicit"
+    # Both integrators timed as `softgrain info` does, the configured one marked; the explicit
+    # one's step is the model's own estimate, and the IMEX step is not damping-limited.
+    explicit, imex = info["integrators"]
+    assert (explicit["integrator"], imex["integrator"]) == ("explicit", "imex")
+    assert explicit["configured"] and not imex["configured"]
+    assert explicit["stable_step"] == pytest.approx(info["stable_step"], rel=1e-12)
+    assert imex["step_limit"] == "wave-speed-limited"
+    for cost in (explicit, imex):
+        assert cost["seconds_per_step"] > 0
+        assert cost["seconds_per_time_unit"] == pytest.approx(
+            cost["seconds_per_step"] / cost["stable_step"], rel=1e-12)
+    assert "integrators" not in softgrain.Scenario.from_file(
+        EXAMPLES / "shear-cell-small.toml").info(timing=False)
 
 
 def test_a_bad_key_names_the_key_and_its_line(small_cell):
