@@ -23,7 +23,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Test hook (tests/io/test_crash_resume.cpp): with SOFTGRAIN_TEST_KILL_AT_WRITE=N in the
+// Test hook (tests/run/test_crash_resume.cpp): with SOFTGRAIN_TEST_KILL_AT_WRITE=N in the
 // environment, the process kills itself with SIGKILL in its N-th atomic write, once the
 // temporary file is written and before it replaces the file (the worst moment to die).
 void kill_here_if_asked() {

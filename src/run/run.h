@@ -10,7 +10,7 @@
 // Resuming (RunOptions::resume) reads checkpoint.bin, cuts series.csv.partial back to the
 // rows written when the checkpoint was taken, restores the .pvd indexes to the snapshots
 // taken by then, and continues: the finished folder is byte-identical to that of a run that
-// never stopped (tests/io/test_checkpoint_restart.cpp).
+// never stopped (tests/run/test_checkpoint_restart.cpp).
 // The progress (simulated time, steps/s, ETA) goes to `progress` when it is set.
 //
 // run_scenario loops over a RunSession (run/run_session.h), which programs embedding a run

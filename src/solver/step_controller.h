@@ -27,7 +27,7 @@
 //      definition; (c) it is no larger than that gap between the ledger's and the true
 //      kinetic energy which every constant-step run has unchecked. It stays visible, summed,
 //      in EnergyLedger::step_change. (Measured on the seam scene of
-//      tests/io/test_checkpoint_restart.cpp: +1.6e-4 at the halving after the rejection,
+//      tests/run/test_checkpoint_restart.cpp: +1.6e-4 at the halving after the rejection,
 //      -5.0e-4 at a growth by 1.25, against tolerance x scale = 1.5e-3 at 0.0006; at
 //      0.0001 a growth's -2.9e-4 exceeds the 2.6e-4 allowed: a check including it would
 //      reject the growths.)
