@@ -45,22 +45,6 @@ fs::path campaign_dir() {
 // lost contact on 15-90% of the window's rows and mu was null.) The papers' damping
 // (alpha~ = -1.5, alpha ~ 0.1) integrated implicitly (integrator = "imex"): about 1 s per
 // run, where the damping-limited explicit step took 4-5 s.
-std::string pressure_cell() {
-  scenes::CohesiveShearCell c;
-  c.name = "cell";
-  c.duration = 4.0;
-  c.compaction_time = 0.4;
-  c.grains = 16;
-  c.series_period = 0.01;
-  c.field_period = 0.1;
-  c.extra_time = "integrator = \"imex\"";
-  std::string text = scenes::shear_cell_scenario(c);
-  const std::string rigid = "name = \"first_body\"\nyoung = 1000.0\n";
-  text.replace(text.find(rigid), rigid.size(), rigid + "density = 0.1\n");
-  return text + "normal_load = \"pressure\"\npressure = " + std::to_string(kPressure) +
-         "\nservo_damping = 0.5\n";
-}
-
 Table read_csv(const fs::path& path) {
   std::ifstream in(path);
   EXPECT_TRUE(in) << path;
@@ -124,7 +108,7 @@ std::vector<double> ranks(const std::vector<double>& v) {
 
 TEST(PaperCampaign, ATinyCampaignInETildeAndCTildeGivesEveryFigure) {
   const fs::path dir = campaign_dir();
-  std::ofstream(dir / "cell.toml") << pressure_cell();
+  std::ofstream(dir / "cell.toml") << scenes::tiny_pressure_cell(0.1, std::to_string(kPressure));
   std::ofstream(dir / "campaign.toml") << R"(name = "paper"
 scenario = "cell.toml"
 output = "out"

@@ -91,24 +91,9 @@ TEST(PressureExamples, TheServoLoadsTheLayerWithinTheRun) {
 
 // 16 soft grains, L = 6, 4 time units under p = 1 (tests/campaign/test_paper_campaign.cpp's
 // cell: a light top, servo damping 0.5, imex).
-std::string tiny_pressure_cell() {
-  scenes::CohesiveShearCell c;
-  c.name = "cell";
-  c.duration = 4.0;
-  c.compaction_time = 0.4;
-  c.grains = 16;
-  c.series_period = 0.01;
-  c.field_period = 1.0;
-  c.extra_time = "integrator = \"imex\"";
-  std::string text = scenes::shear_cell_scenario(c);
-  const std::string rigid = "name = \"first_body\"\nyoung = 1000.0\n";
-  text = scenes::replace_once(text, rigid, rigid + "density = 0.1\n");
-  return text + "normal_load = \"pressure\"\npressure = 1.0\nservo_damping = 0.5\n";
-}
-
 TEST(PressureExamples, ARunOfACampaignReportsItsRequestedAndImposedCoordinates) {
   const fs::path dir = scenes::process_temp_dir("pressure_campaign");
-  std::ofstream(dir / "cell.toml") << tiny_pressure_cell();
+  std::ofstream(dir / "cell.toml") << scenes::tiny_pressure_cell(1.0, "1.0");
   std::ofstream(dir / "campaign.toml") << R"(name = "requested"
 scenario = "cell.toml"
 output = "out"

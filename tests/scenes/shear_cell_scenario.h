@@ -51,4 +51,21 @@ inline std::string shear_cell_scenario(const CohesiveShearCell& c) {
   return s.str();
 }
 
+// A 16-grain imex cell under pressure loading with a light top (density 0.1) and a stiff servo,
+// which loads the layer within its 4 time units (the campaign tests under pressure).
+inline std::string tiny_pressure_cell(double field_period, const std::string& pressure) {
+  CohesiveShearCell c;
+  c.name = "cell";
+  c.duration = 4.0;
+  c.compaction_time = 0.4;
+  c.grains = 16;
+  c.series_period = 0.01;
+  c.field_period = field_period;
+  c.extra_time = "integrator = \"imex\"";
+  std::string text = shear_cell_scenario(c);
+  const std::string rigid = "name = \"first_body\"\nyoung = 1000.0\n";
+  text.replace(text.find(rigid), rigid.size(), rigid + "density = 0.1\n");
+  return text + "normal_load = \"pressure\"\npressure = " + pressure + "\nservo_damping = 0.5\n";
+}
+
 }  // namespace sg::scenes
