@@ -44,9 +44,14 @@ labels=$(IFS='|'; echo "fuzz|odr|${fast_modules[*]}")
 # time against a run's own), or repeat under the sanitizers code that faster tests of the pass
 # already cover (whole campaigns with their figures, the largest packing); each took minutes
 # under ASan, together about 4 of the pass's 11 CPU minutes.
+# The brute-force check of the periodic broad phase and the Fourier-grain packing (51 and 48 s
+# under ASan) repeat code that the non-periodic brute-force check and the other packings of the
+# pass run in seconds.
 slow_under_sanitizers=('CampaignPlan\.ProjectedWallTime' 'PaperCampaign\.ATinyCampaign'
                        'Packing\.Paper003Mixture' 'PressureExamples\.TheServoLoads'
-                       'PressureExamples\.TheExampleCampaignsPlan')
+                       'PressureExamples\.TheExampleCampaignsPlan'
+                       'BroadPhase\.NoMissedPairVersusBruteForcePeriodic'
+                       'Packing\.FourierGrainsInABoxWithAGap')
 excluded=$(IFS='|'; echo "${slow_under_sanitizers[*]}")
 ASAN_OPTIONS=abort_on_error=1:detect_leaks=1 \
   UBSAN_OPTIONS=halt_on_error=1:abort_on_error=1:print_stacktrace=1 \
