@@ -3,8 +3,8 @@
 // one parameter set and one grid for a whole sequence, shared by `softgrain analyze`
 // (agglomerates) and `softgrain render --field coherence` (pictures, which show the C of
 // grain_coherence below), so that a picture shows the field the statistics are computed from. (The
-// grid's y span follows the snapshots given: analyze uses the window's, render all frames', so
-// values near the layer's edges may differ a little.)
+// grid's y span follows the snapshots given: analyze uses the window's, render the frames it
+// draws, so values near the layer's edges may differ a little.)
 //
 // Parameters from the mean grain diameter d (paper 002 §2.2): grid spacing d, MLS support
 // 2 d (velocity_grid.h), coherence radius R = 2.5 d ("two to three times the typical size

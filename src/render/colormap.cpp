@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace sg {
 
@@ -72,6 +73,35 @@ Rgb category_colour(int k) {
   }};
   const auto& c = kTableau[static_cast<std::size_t>(((k % 10) + 10) % 10)];
   return {c[0] / 255.0, c[1] / 255.0, c[2] / 255.0};
+}
+
+Rgb agglomerate_colour(double grain_class) {
+  if (std::isnan(grain_class)) return cool_warm(std::nan(""));
+  if (grain_class > 0.5) return cool_warm(1.0);
+  if (grain_class < -0.5) return cool_warm(0.0);
+  return {0.86, 0.86, 0.86};  // lighter than the map's midpoint: clearly "not in a structure"
+}
+
+double ColourScale::fraction(double v) const {
+  if (std::isnan(v)) return v;
+  if (!log) return hi > lo ? (v - lo) / (hi - lo) : 0.5;
+  if (v <= 0.0) return -std::numeric_limits<double>::infinity();
+  return std::log(v / lo) / std::log(hi / lo);
+}
+
+double ColourScale::value_at(double f) const {
+  return log ? lo * std::pow(hi / lo, f) : lo + f * (hi - lo);
+}
+
+std::vector<double> decades_within(double lo, double hi) {
+  std::vector<double> out;
+  if (!(lo > 0.0 && hi > lo)) return out;
+  // A relative slack so that a bound that is a power of ten up to round-off counts as one.
+  const double slack = 1e-9;
+  for (int k = static_cast<int>(std::ceil(std::log10(lo) - slack));
+       k <= static_cast<int>(std::floor(std::log10(hi) + slack)); ++k)
+    out.push_back(std::pow(10.0, k));
+  return out;
 }
 
 }  // namespace sg

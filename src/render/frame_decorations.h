@@ -1,6 +1,6 @@
 #pragma once
 // Around the drawing of a picture: the title (run, field, time) and frame number, a length
-// scale bar, and the colour bar with the field's name, unit and range.
+// scale bar, and the colour key (render/colour_bar.h).
 #include <cairo.h>
 
 #include <string>
@@ -14,5 +14,10 @@ void draw_decorations(cairo_t* cr, const Layout& l, const Style& s, const Frame&
 
 // A number as the pictures and their notes print it (3 significant digits).
 std::string format_number(double v);
+
+// Text at (x, y) (the baseline), `align` 0 left, 1 right of x; leaves the current point at its
+// end.
+void draw_text(cairo_t* cr, double x, double y, const std::string& text, double size,
+               double align = 0.0);
 
 }  // namespace sg

@@ -12,14 +12,15 @@
 namespace sg {
 namespace {
 
-// The x shifts (multiples of the period) at which a cell spanning [x0, x1] shows in the
-// period box.
-std::vector<double> shifts_for(const Style& s, double x0, double x1) {
+// The x shifts (multiples of the period) at which a cell spanning [x0, x1] shows in the drawn
+// part of the world (one period, or more when the layout repeats it to fill the width).
+std::vector<double> shifts_for(const Layout& l, const Style& s, double x0, double x1) {
   if (!s.periodic) return {0.0};
-  const double a = s.periodic->first, b = s.periodic->second, L = b - a;
+  const double L = s.periodic->second - s.periodic->first;
+  const double lo = l.world.lo.x(), hi = l.world.hi.x();
   std::vector<double> out;
-  for (int k = -1; k <= 1; ++k)
-    if (x1 + k * L > a && x0 + k * L < b) out.push_back(k * L);
+  for (double k = std::floor((lo - x1) / L); k <= std::ceil((hi - x0) / L); k += 1.0)
+    if (x1 + k * L > lo && x0 + k * L < hi) out.push_back(k * L);
   return out;
 }
 
@@ -59,7 +60,7 @@ void draw_rigid_bodies(cairo_t* cr, const Layout& l, const Style& s, const VtuMe
         rigid_coloured
             ? colour_of(s, s.categorical ? body[static_cast<std::size_t>(cell[0])] : mean)
             : Rgb{0.78, 0.78, 0.78};
-    for (double shift : shifts_for(s, b.lo.x(), b.hi.x())) {
+    for (double shift : shifts_for(l, s, b.lo.x(), b.hi.x())) {
       cairo_new_path(cr);
       for (int p : cell) {
         const Vec2& q = m.points[static_cast<std::size_t>(p)];
@@ -90,7 +91,7 @@ void draw_flat_grains(cairo_t* cr, const Layout& l, const Style& s, const VtuMes
       const auto p = triangle_points(m, m.cell(c), s);
       const double x0 = std::min({p[0].x(), p[1].x(), p[2].x()});
       const double x1 = std::max({p[0].x(), p[1].x(), p[2].x()});
-      for (double shift : shifts_for(s, x0, x1)) {
+      for (double shift : shifts_for(l, s, x0, x1)) {
         cairo_move_to(cr, l.px(p[0].x() + shift), l.py(p[0].y()));
         cairo_line_to(cr, l.px(p[1].x() + shift), l.py(p[1].y()));
         cairo_line_to(cr, l.px(p[2].x() + shift), l.py(p[2].y()));
@@ -116,7 +117,7 @@ void draw_shaded_grains(cairo_t* cr, const Layout& l, const Style& s, const VtuM
     const auto p = triangle_points(m, cell, s);
     const double x0 = std::min({p[0].x(), p[1].x(), p[2].x()});
     const double x1 = std::max({p[0].x(), p[1].x(), p[2].x()});
-    for (double shift : shifts_for(s, x0, x1)) {
+    for (double shift : shifts_for(l, s, x0, x1)) {
       cairo_mesh_pattern_begin_patch(mesh);
       cairo_mesh_pattern_move_to(mesh, l.px(p[0].x() + shift), l.py(p[0].y()));
       cairo_mesh_pattern_line_to(mesh, l.px(p[1].x() + shift), l.py(p[1].y()));
@@ -142,7 +143,7 @@ void add_segment(cairo_t* cr, const Layout& l, const Style& s, const Vec2& a, Ve
     const double L = s.periodic->second - s.periodic->first;
     b.x() -= L * std::round((b.x() - a.x()) / L);
   }
-  for (double shift : shifts_for(s, std::min(a.x(), b.x()), std::max(a.x(), b.x()))) {
+  for (double shift : shifts_for(l, s, std::min(a.x(), b.x()), std::max(a.x(), b.x()))) {
     cairo_move_to(cr, l.px(a.x() + shift), l.py(a.y()));
     cairo_line_to(cr, l.px(b.x() + shift), l.py(b.y()));
   }
@@ -203,12 +204,15 @@ void draw_frame(cairo_t* cr, const Layout& l, const Style& s, const Frame& f) {
   cairo_rectangle(cr, l.plot_x0, l.plot_y0, l.plot_x1 - l.plot_x0, l.plot_y1 - l.plot_y0);
   cairo_clip(cr);
   if (s.periodic) {
-    // The period: a light band, so that the seam-wrapped cell reads as one.
+    // The period: a light band, so that the seam-wrapped cell reads as one (and, where the
+    // layout repeats the layer to fill the width, where the period is).
     const double xa = l.px(s.periodic->first), xb = l.px(s.periodic->second);
-    cairo_rectangle(cr, xa, l.py(l.world.hi.y()), xb - xa,
-                    l.py(l.world.lo.y()) - l.py(l.world.hi.y()));
+    const double ya = l.py(l.world.hi.y()), yb = l.py(l.world.lo.y());
+    cairo_rectangle(cr, xa, ya, xb - xa, yb - ya);
     cairo_set_source_rgb(cr, 0.965, 0.965, 0.965);
-    cairo_fill_preserve(cr);
+    cairo_fill(cr);
+    cairo_rectangle(cr, l.px(l.world.lo.x()), ya, l.px(l.world.hi.x()) - l.px(l.world.lo.x()),
+                    yb - ya);
     cairo_clip(cr);
   }
   draw_rigid_bodies(cr, l, s, m, value, body);

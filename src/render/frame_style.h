@@ -25,16 +25,25 @@ struct Style {
   std::string field;
   std::string rate_unit;  // RenderOptions::strain_rate_unit
   bool categorical = false;
-  bool diverging = false;  // cool-warm instead of viridis
+  bool diverging = false;     // cool-warm instead of viridis
+  bool agglomerates = false;  // the values are grain classes (agglomerate_colour)
+  double threshold = 0.8;     // agglomerates: the |C| a grain's class was cut at
   double lo = 0.0, hi = 1.0;
+  bool log = false;  // logarithmic colour scale over [lo, hi] (lo > 0)
   std::optional<std::pair<double, double>> periodic;
   std::string title;
 };
 
-// The colour of value v: by category, or on the field's map over [lo, hi].
+inline ColourScale scale_of(const Style& s) {
+  return {s.lo, s.hi, s.log};
+}
+
+// The colour of value v: by category or agglomerate class, or on the field's map over
+// [lo, hi].
 inline Rgb colour_of(const Style& s, double v) {
   if (s.categorical) return category_colour(static_cast<int>(std::lround(v)));
-  const double t = s.hi > s.lo ? (v - s.lo) / (s.hi - s.lo) : 0.5;
+  if (s.agglomerates) return agglomerate_colour(v);
+  const double t = scale_of(s).fraction(v);
   return s.diverging ? cool_warm(t) : viridis(t);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The frames of a series joined into an MP4 movie by ffmpeg, when ffmpeg is on PATH: the only
 // external program the renderer runs.
+#include <cstddef>
 #include <filesystem>
 #include <string>
 
@@ -14,9 +15,10 @@ struct Movie {
   std::string note;            // why there is none
 };
 
-// Joins <out_dir>/<field>_NNNNNN.png, numbered consecutively from the number `first_frame`
-// (a snapshot's file stem, "000000"), at 8 frames per second into <out_dir>/<field>.mp4.
+// Joins `frames` pictures <out_dir>/<field>_NNNNNN.png, numbered consecutively from the number
+// `first_frame` (a snapshot's file stem, "000000"), at 8 frames per second into
+// <out_dir>/<field>.mp4 (pictures of an earlier render after them are left out).
 Movie encode_movie(const std::filesystem::path& out_dir, const std::string& field,
-                   const std::string& first_frame);
+                   const std::string& first_frame, std::size_t frames);
 
 }  // namespace sg

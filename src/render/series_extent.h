@@ -1,8 +1,7 @@
 #pragma once
-// What a series of pictures shares (render/snapshot_renderer.h): the box that holds every
-// frame, and the colour range of the field: given, else min and max of the coloured values
-// over every frame (or their 1st-99th percentiles), the contact rates on the outlines
-// included; [-1, 1] for the coherence.
+// What a series of pictures shares (render/snapshot_renderer.h), measured over the frames drawn
+// (render/frame_selection.h): the box that holds them, and the field's coloured values (the
+// contact rates on the outlines included) from which render/colour_range.h picks the range.
 #include <filesystem>
 #include <limits>
 #include <string>
@@ -15,7 +14,7 @@
 
 namespace sg {
 
-// Pass 1, over every frame: the drawing box, and (for a field read from the .vtu with no
+// Pass 1, over the frames drawn: the drawing box, and (for a field read from the .vtu with no
 // given range) the range of the coloured values with every value for the robust range.
 struct SeriesExtent {
   BoundingBox world;
@@ -26,10 +25,5 @@ struct SeriesExtent {
 
 SeriesExtent measure_series(const std::vector<PvdEntry>& entries, const Style& style,
                             const RenderOptions& options, const std::filesystem::path& pvd);
-
-// The colour range: given, else robust, else full (with a hint when it is dominated by
-// outliers); C is always [-1, 1].
-void choose_range(SeriesExtent& e, Style& style, const RenderOptions& options,
-                  RenderResult& result);
 
 }  // namespace sg

@@ -1,13 +1,15 @@
 #include "render/snapshot_renderer.h"
 
+#include <algorithm>
 #include <cmath>
-#include <limits>
 
-#include "analysis/coherence_frames.h"
 #include "core/error.h"
 #include "core/file_name.h"
+#include "render/coherence_arrays.h"
+#include "render/colour_range.h"
 #include "render/contact_outlines.h"
 #include "render/frame_picture.h"
+#include "render/frame_selection.h"
 #include "render/movie.h"
 #include "render/picture_layout.h"
 #include "render/series_extent.h"
@@ -17,59 +19,20 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Coherence at each grain's centre, per frame, indexed by body id (NaN for bodies without
-// a grain row or where C is undefined): the numbers the "coherence" pictures show
-// (analysis/coherence_frames.h), from the grain snapshots with the pictures' numbers.
-std::vector<std::vector<double>> grain_coherence_by_frame(const fs::path& run_dir,
-                                                          const std::vector<PvdEntry>& entries,
-                                                          const RenderOptions& options,
-                                                          std::string& note) {
-  std::vector<GrainSnapshot> snaps;
-  for (const PvdEntry& e : entries) {
-    const fs::path csv = run_dir / "grains" / (e.file.stem().string() + ".csv");
-    SG_VERIFY(fs::exists(csv), "render --field coherence: '"
-                                   << csv.string() << "' is missing (the grain snapshot of '"
-                                   << e.file.filename().string() << "')");
-    snaps.push_back(
-        without_bodies(read_grain_snapshot(csv.string(), e.time), options.non_grain_rows));
-  }
-  double diameter = options.mean_diameter;
-  for (std::size_t k = 0; !(diameter > 0.0) && k < snaps.size(); ++k)
-    diameter = mean_equivalent_diameter(snaps[k]);
-  SG_VERIFY(diameter > 0.0,
-            "render --field coherence: no grain in " << (run_dir / "grains").string());
-  GrainCoherence coherence = grain_coherence(snaps, diameter, options.periodic);
-  note = "coherence grid: " + coherence.note;
-  return std::move(coherence.by_body);
-}
-
-// Adds the point array "coherence" to a mesh: each point gets its body's value.
-void add_coherence_array(VtuMesh& m, const std::vector<double>& by_body) {
-  const std::vector<double> body = point_scalar(m, "body_id");
-  VtuArray a;
-  a.name = "coherence";
-  a.values.resize(m.points.size(), std::numeric_limits<double>::quiet_NaN());
-  for (std::size_t p = 0; p < body.size(); ++p) {
-    const long id = std::lround(body[p]);
-    if (id >= 0 && static_cast<std::size_t>(id) < by_body.size())
-      a.values[p] = by_body[static_cast<std::size_t>(id)];
-  }
-  m.point_data.push_back(std::move(a));
-}
-
 void add_note(RenderResult& result, const std::string& n) {
   result.note += (result.note.empty() ? "" : "; ") + n;
 }
 
 // The movie (render/movie.h), when asked for and there is more than one frame.
-void make_movie(const std::vector<PvdEntry>& entries, const RenderOptions& options,
+void make_movie(const std::vector<PvdEntry>& frames, const RenderOptions& options,
                 const fs::path& out_dir, RenderResult& result) {
   if (!options.movie) return;
   if (result.images.size() < 2) {
     add_note(result, "one frame: no movie");
     return;
   }
-  const Movie movie = encode_movie(out_dir, options.field, entries.front().file.stem().string());
+  const Movie movie =
+      encode_movie(out_dir, options.field, frames.front().file.stem().string(), frames.size());
   result.movie = movie.file;
   if (!movie.note.empty()) add_note(result, movie.note);
 }
@@ -77,30 +40,29 @@ void make_movie(const std::vector<PvdEntry>& entries, const RenderOptions& optio
 }  // namespace
 
 const std::vector<std::string>& render_field_choices() {
-  static const std::vector<std::string> choices = {"von_mises",
-                                                   "velocity",
-                                                   "velocity_x",
-                                                   "velocity_y",
-                                                   "body",
-                                                   "coherence",
-                                                   "green_lagrange_norm",
-                                                   "strain_rate",
-                                                   "strain_rate_instant",
-                                                   "pressure",
-                                                   "sigma_xx",
-                                                   "sigma_yy",
-                                                   "sigma_xy",
-                                                   "displacement",
-                                                   "displacement_x",
-                                                   "displacement_y",
-                                                   "body_id",
+  static const std::vector<std::string> choices = {"von_mises",      "velocity",
+                                                   "velocity_x",     "velocity_y",
+                                                   "body",           "coherence",
+                                                   "agglomerates",   "green_lagrange_norm",
+                                                   "strain_rate",    "strain_rate_instant",
+                                                   "pressure",       "sigma_xx",
+                                                   "sigma_yy",       "sigma_xy",
+                                                   "displacement",   "displacement_x",
+                                                   "displacement_y", "body_id",
                                                    "material_id"};
   return choices;
 }
 
 bool field_defined_on_rigid(const std::string& field) {
   return field.rfind("velocity", 0) == 0 || field.rfind("displacement", 0) == 0 ||
-         field == "body" || field == "body_id" || field == "coherence";
+         field == "body" || field == "body_id" || field_from_grain_snapshots(field);
+}
+
+bool field_is_nonnegative(const std::string& field) {
+  static const std::vector<std::string> fields = {"von_mises",    "velocity",
+                                                  "strain_rate",  "strain_rate_instant",
+                                                  "displacement", "green_lagrange_norm"};
+  return std::find(fields.begin(), fields.end(), field) != fields.end();
 }
 
 namespace {
@@ -114,6 +76,44 @@ void check_options(const RenderOptions& options) {
     SG_VERIFY(options.range->second > options.range->first,
               "render: --range " << options.range->first << " " << options.range->second
                                  << ": MAX must exceed MIN");
+  if (options.log_scale) {
+    std::string fields;
+    for (const std::string& f : render_field_choices())
+      if (field_is_nonnegative(f)) fields += (fields.empty() ? "" : ", ") + f;
+    SG_VERIFY(field_is_nonnegative(options.field),
+              "render --log: field '" << options.field
+                                      << "' is signed or categorical; a log scale draws fields "
+                                         "that are never negative: "
+                                      << fields);
+    if (options.range)
+      SG_VERIFY(options.range->first > 0.0,
+                "render --log: --range " << options.range->first << " " << options.range->second
+                                         << ": MIN must be positive on a log scale");
+  }
+  if (options.field == "agglomerates")
+    SG_VERIFY(options.agglomerate_threshold > 0.0 && options.agglomerate_threshold < 1.0,
+              "render --threshold " << options.agglomerate_threshold
+                                    << ": expected a |C| strictly between 0 and 1");
+  SG_VERIFY(!(options.steady_window && options.time_window),
+            "render: the analysed window and a given time window exclude each other");
+  if (options.time_window)
+    SG_VERIFY(options.time_window->second >= options.time_window->first,
+              "render: time window [" << options.time_window->first << ", "
+                                      << options.time_window->second << "]: the end is before "
+                                      << "the start");
+}
+
+Style style_for(const RenderOptions& options) {
+  Style style;
+  style.field = options.field;
+  style.rate_unit = options.strain_rate_unit;
+  style.categorical = options.field == "body" || options.field == "body_id";
+  style.diverging = options.field == "coherence";
+  style.agglomerates = options.field == "agglomerates";
+  style.threshold = options.agglomerate_threshold;
+  style.periodic = options.periodic;
+  style.title = options.title;
+  return style;
 }
 
 }  // namespace
@@ -125,46 +125,48 @@ RenderResult render_run(const fs::path& run_dir, const RenderOptions& options) {
                                  << "or the run wrote no field snapshot");
   const std::vector<PvdEntry> entries = read_pvd(pvd);
   SG_VERIFY(!entries.empty(), pvd.string() << ": no snapshot listed");
+  const std::vector<PvdEntry> frames =
+      select_frames(entries, options.steady_window ? analysed_window(run_dir) : options.time_window,
+                    options.last_frame_only, pvd);
 
-  Style style;
-  style.field = options.field;
-  style.rate_unit = options.strain_rate_unit;
-  style.categorical = options.field == "body" || options.field == "body_id";
-  const bool coherence = options.field == "coherence";
-  style.diverging = coherence;
-  style.periodic = options.periodic;
-  style.title = options.title;
-
-  // Pass 1: the drawing box and the colour range, fixed for the series.
-  SeriesExtent extent = measure_series(entries, style, options, pvd);
+  Style style = style_for(options);
+  // Pass 1: the drawing box and the colour range of the frames drawn.
+  SeriesExtent extent = measure_series(frames, style, options, pvd);
   RenderResult result;
-  std::vector<std::vector<double>> coherence_by_frame;
-  if (coherence)
-    coherence_by_frame = grain_coherence_by_frame(run_dir, entries, options, result.note);
-  if (!style.categorical) choose_range(extent, style, options, result);
+  result.first_time = frames.front().time;
+  result.last_time = frames.back().time;
+  GrainCoherenceFrames grain_values;
+  if (field_from_grain_snapshots(options.field)) {
+    grain_values = grain_coherence_frames(run_dir, frames, options);
+    add_note(result, grain_values.note);
+    if (style.agglomerates)
+      add_note(result, agglomerate_share_note(grain_values, options.agglomerate_threshold));
+  }
+  if (!style.categorical && !style.agglomerates) choose_range(extent, style, options, result);
+  const bool periodic = options.periodic.has_value();
   const Layout layout =
-      make_layout(options.width, options.height,
-                  with_margin(extent.world, options.periodic.has_value()), !style.categorical);
+      make_layout(options.width, options.height, with_margin(extent.world, periodic),
+                  !style.categorical, periodic);
+  result.world = layout.world;
 
   // Pass 2: the pictures.
   require_plain_file_name(options.field, "render --field (names its pictures)");
   const fs::path out_dir = run_dir / "render";
   fs::create_directories(out_dir);
-  const std::size_t first = options.last_frame_only ? entries.size() - 1 : 0;
-  for (std::size_t i = first; i < entries.size(); ++i) {
-    VtuMesh m = read_vtu(entries[i].file);
-    if (coherence) add_coherence_array(m, coherence_by_frame[i]);
-    const std::string number = entries[i].file.stem().string();
-    Frame frame{&m, entries[i].time, number, {}};
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    VtuMesh m = read_vtu(frames[i].file);
+    if (field_from_grain_snapshots(options.field)) add_grain_array(m, grain_values, i, options);
+    const std::string number = frames[i].file.stem().string();
+    Frame frame{&m, frames[i].time, number, {}};
     if (field_shows_contact_rates(options.field))
       frame.contact_value =
-          contact_rates_on_points(entries[i].file, m.points.size(), extent.contact_note);
+          contact_rates_on_points(frames[i].file, m.points.size(), extent.contact_note);
     const fs::path png = out_dir / (options.field + "_" + number + ".png");
     write_png(layout, style, frame, png);
     result.images.push_back(png);
   }
   if (!extent.contact_note.empty()) add_note(result, extent.contact_note);
-  make_movie(entries, options, out_dir, result);
+  make_movie(frames, options, out_dir, result);
   return result;
 }
 
