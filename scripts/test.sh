@@ -45,6 +45,7 @@ labels=$(IFS='|'; echo "fuzz|odr|${fast_modules[*]}")
 # already cover (whole campaigns with their figures, the largest packing); each took minutes
 # under ASan, together about 4 of the pass's 11 CPU minutes.
 slow_under_sanitizers=('CampaignPlan\.ProjectedWallTime' 'PaperCampaign\.ATinyCampaign'
+                       'CampaignFigures\.TheExampleCampaign'
                        'Packing\.Paper003Mixture' 'PressureExamples\.TheServoLoads'
                        'PressureExamples\.TheExampleCampaignsPlan')
 excluded=$(IFS='|'; echo "${slow_under_sanitizers[*]}")
