@@ -15,21 +15,38 @@ Several runs in one cell (a third parameter varied) are averaged and the count i
 Default output: mu_map.png next to campaign.csv.
 
 With --all (what `softgrain sweep` runs), also the campaign figures of papers 001 and 002,
-next to campaign.csv, each drawn from the runs that have its quantities:
+next to campaign.csv, each drawn from the runs that have its quantities. Axes carry the
+papers' symbols (LABELS: one table from column to label), not the columns' keys:
 
   campaign_points.png   the runs in (E~, c~, alpha~) as measured (summary.json's
                         stiffness_tilde, cohesion_tilde, viscosity_tilde), coloured by mu
                         (paper 001 Fig. 3)
-  mu_vs_stress.png      mu against sigma_n / E = 10^-E~ for every run (paper 001 Fig. 4)
+  mu_vs_stress.png      mu against sigma_n / E = 10^-E~ for every run, coloured by c~, with
+                        error bars: mu's error of the mean (mu_error) where the run has it,
+                        else the standard deviation of mu(t) (mu_std); the title says which
+                        (paper 001 Fig. 4)
+  bulk_share_vs_cohesion.png
+                        p_wb (%) against c~, coloured by E~, with a straight line fitted to
+                        the runs of each E~ (the requested E~ of a campaign in the papers'
+                        coordinates, else E~ rounded to --alpha-step) and a plane p_wb = a +
+                        b c~ + d E~ fitted to all runs, their parameters in the legend
+                        (paper 001 Fig. 13: "linear fittings ... as a guide for the eye")
   maps[_alpha=A].png    mu, p_wb, mu_b, mu_s and the share of grains in structures over
                         (E~, c~), interpolated between the runs (scipy.interpolate.griddata,
                         linear on the Delaunay triangulation of the points; nothing outside
-                        their convex hull), the runs as dots; one figure per slice of alpha~
-                        (runs whose alpha~ rounds to A at --alpha-step) (paper 001 Figs 5, 13,
-                        14; paper 002 Figs 11, 13)
+                        their convex hull), the runs as dots; one figure per slice of alpha~:
+                        the runs that requested alpha~ = A (a campaign in the papers'
+                        coordinates), else those whose realized alpha~ rounds to A at
+                        --alpha-step; the title gives the slice's realized range of alpha~.
+                        A quantity no run of the slice has, or that is the same for all, gets
+                        no panel; a note under the maps names it (paper 001 Figs 5, 13, 14;
+                        paper 002 Figs 11, 13)
   correlations.png      scatter plots of pairs of quantities with their Pearson r and
-                        Spearman rho (paper 002 Figs 15-17; paper 003 Fig. 13d: mu vs ATT)
-  correlations.csv      x,y,n,pearson,spearman for every pair drawn (n: runs with both)
+                        Spearman rho (paper 002 Figs 13A/B, 15, 16, 17A/B; paper 003 Fig. 13d:
+                        mu vs ATT); a pair without coefficients (fewer than 3 runs with both,
+                        or a constant one) gets no panel, a note under the others names it
+  correlations.csv      x,y,n,pearson,spearman for every pair (n: runs with both; empty
+                        coefficients for the pairs left out of the picture)
 
 --pairs X:Y,X:Y chooses the pairs (any two columns of campaign.csv).
 """
@@ -44,6 +61,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from matplotlib.ticker import MaxNLocator  # noqa: E402
 
 
 def number(text):
@@ -97,12 +115,67 @@ def choose_axes(parameters, rows, x, y):
     return parameters[0], (parameters[1] if len(parameters) > 1 else None)
 
 
-DEFAULT_PAIRS = [("omega_tilde_mode", "mu"), ("structure_diameter_mean", "contact_friction"),
-                 ("att_map", "mu"), ("grain_share_in_structures", "mu"),
+# (x, y) drawn by default in correlations.png, each as its paper draws it: paper 002 Fig. 13A
+# (omega~ against E~), 13B (against the solid fraction), 15 (structure diameter against c~),
+# 16 (mu against omega~), 17A (mu_b against omega~), 17B (mu_s against the structure
+# diameter); paper 003 Fig. 13d (mu against the ATT); mu against the realized E~ and c~, and
+# the ATT against alpha~.
+DEFAULT_PAIRS = [("stiffness_tilde", "omega_tilde_mode"), ("solid_fraction", "omega_tilde_mode"),
+                 ("cohesion_tilde", "structure_diameter_mean"), ("omega_tilde_mode", "mu"),
+                 ("omega_tilde_mode", "bulk_friction"),
+                 ("structure_diameter_mean", "contact_friction"), ("att_map", "mu"),
                  ("stiffness_tilde", "mu"), ("cohesion_tilde", "mu"),
                  ("viscosity_tilde", "att_map")]
-MAP_QUANTITIES = [("mu", "mu"), ("bulk_share", "p_wb"), ("bulk_friction", "mu_b"),
-                  ("contact_friction", "mu_s"), ("grain_share_in_structures", "grains in structures")]
+# Paper 002 Figs 13A/B: the size of a dot is the share of the run's grains in structures.
+SIZED_BY_GRAIN_SHARE = {("stiffness_tilde", "omega_tilde_mode"),
+                        ("solid_fraction", "omega_tilde_mode")}
+MAP_QUANTITIES = ["mu", "bulk_share", "bulk_friction", "contact_friction",
+                  "grain_share_in_structures"]
+
+# Every axis, colour bar and title names a column of campaign.csv by its symbol in the papers
+# (matplotlib mathtext); a column not listed keeps its key. "<key>_requested" (the coordinate
+# a campaign asked for) is labelled as <key> with "(requested)".
+LABELS = {
+    "mu": r"$\mu$",
+    "mu_std": r"std of $\mu(t)$",
+    "mu_error": r"error of the mean of $\mu$",
+    "top_mu": r"$\mu$ (top)",
+    "bottom_mu": r"$\mu$ (bottom)",
+    "stiffness_tilde": r"$\tilde{E}$",
+    "cohesion_tilde": r"$\tilde{c}$",
+    "viscosity_tilde": r"$\tilde{\alpha}$",
+    "normal_stress": r"$\bar{\sigma}_n$",
+    "shear_stress": r"$\bar{\sigma}_t$",
+    "top_normal_stress": r"$\bar{\sigma}_n$ (top)",
+    "bottom_normal_stress": r"$\bar{\sigma}_n$ (bottom)",
+    "imposed_pressure": r"$p$",
+    "bulk_share": r"$p_{wb}$",
+    "contact_share": r"$p_{ws}$",
+    "bulk_friction": r"$\mu_b$",
+    "contact_friction": r"$\mu_s$",
+    "mu_from_dissipation": r"$\mu$ from the dissipation",
+    "mu_from_work": r"$\mu$ from the external work",
+    "solid_fraction": r"$S_F$",
+    "att_map": "ATT (velocity map)",
+    "att_profile": "ATT (profile)",
+    "structure_count": "structures",
+    "grain_share_in_structures": "share of grains in structures",
+    "omega_tilde_mode": r"$\tilde{\omega}$ (mode)",
+    "omega_tilde_mean": r"$\tilde{\omega}$ (mean)",
+    "structure_diameter_mode": r"structure diameter $D$ (mode)",
+    "structure_diameter_mean": r"structure diameter $D$ (mean)",
+    "structure_lifetime_mean": r"structure lifetime $\mathcal{L}$ (mean)",
+}
+REQUESTED = "_requested"
+
+
+def label_of(key):
+    """The papers' symbol of a campaign.csv column (LABELS), else the key itself."""
+    if key in LABELS:
+        return LABELS[key]
+    if key.endswith(REQUESTED) and key[:-len(REQUESTED)] in LABELS:
+        return LABELS[key[:-len(REQUESTED)]] + " (requested)"
+    return key
 
 
 def column(rows, key):
@@ -133,6 +206,48 @@ def save(fig, path):
     print(path)
 
 
+def why_no_panel(x, y, names):
+    """Why a scatter of y against x would show nothing (no run has both, fewer than 3, one
+    of them constant), or None if it has something to show. `names`: their labels."""
+    ok = np.isfinite(x) & np.isfinite(y)
+    n = int(ok.sum())
+    if n == 0:
+        return "no run has both"
+    if n < 3:
+        return f"{n} run{'s' if n > 1 else ''} with both (3 needed)"
+    for v, name in zip((x[ok], y[ok]), names):
+        if np.ptp(v) == 0:
+            return f"{name} is {v[0]:g} for every run"
+    return None
+
+
+def why_no_map(e, c, z):
+    """Why a map of z over (E~, c~) would show nothing, or None."""
+    ok = np.isfinite(z) & np.isfinite(e) & np.isfinite(c)
+    if ok.sum() == 0:
+        return "no run of the slice has it"
+    if ok.sum() < 3:
+        return f"{int(ok.sum())} run{'s' if ok.sum() > 1 else ''} of the slice have it (3 needed)"
+    if np.ptp(e[ok]) == 0 or np.ptp(c[ok]) == 0:
+        return r"the runs with it do not span $(\tilde{E}, \tilde{c})$"
+    if np.ptp(z[ok]) == 0:
+        return f"{z[ok][0]:g} for every run"
+    return None
+
+
+def note_left_out(fig, left_out):
+    """Names the panels left out, under the figure; returns the share of the figure's height
+    the note takes (for tight_layout's rect), 0 without one."""
+    if not left_out:
+        return 0.0
+    text = "left out: " + "; ".join(left_out)
+    width, height = fig.get_size_inches() * fig.dpi
+    # About 5.5 pixels a character at 8 points and 100-120 dpi; wrapped to the figure width.
+    lines = math.ceil(len(text) * 5.5 / (0.96 * width))
+    fig.text(0.01, 0.005, text, fontsize=8, ha="left", va="bottom", color="0.3", wrap=True)
+    return min(0.3, (12.0 * lines + 8.0) / height)
+
+
 def correlation(x, y):
     """(n, Pearson r, Spearman rho) over the pairs where both are finite; NaN below 3 pairs
     or for a constant column."""
@@ -149,93 +264,270 @@ def plot_points(rows, folder, campaign):
     e, c, a, mu = (column(rows, k) for k in
                    ("stiffness_tilde", "cohesion_tilde", "viscosity_tilde", "mu"))
     fig = plt.figure(figsize=(6.4, 5.2), dpi=110)
-    ax = fig.add_subplot(projection="3d")
+    # The 3D axes and the colour bar side by side, each label inside the figure.
+    ax = fig.add_axes((0.0, 0.02, 0.80, 0.88), projection="3d")
     ok = np.isfinite(e) & np.isfinite(c)
     a_shown = np.where(np.isfinite(a), a, 0.0)
     points = ax.scatter(e[ok], c[ok], a_shown[ok], c=mu[ok], cmap="viridis", s=40,
                         depthshade=False)
-    ax.set_xlabel("E~")
-    ax.set_ylabel("c~")
-    ax.set_zlabel("alpha~" + ("" if np.isfinite(a[ok]).all() else " (unknown: 0)"))
-    fig.colorbar(points, ax=ax, label="mu", shrink=0.7)
-    ax.set_title(f"{campaign}: the runs in (E~, c~, alpha~)")
+    ax.set_xlabel(label_of("stiffness_tilde"))
+    ax.set_ylabel(label_of("cohesion_tilde"))
+    ax.set_zlabel(label_of("viscosity_tilde")
+                  + ("" if np.isfinite(a[ok]).all() else " (unknown: 0)"), labelpad=12)
+    for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
+        axis.set_major_locator(MaxNLocator(4))
+    ax.set_box_aspect(None, zoom=0.85)
+    fig.colorbar(points, cax=fig.add_axes((0.84, 0.2, 0.03, 0.6)), label=label_of("mu"))
+    fig.suptitle(f"{campaign}: the runs in " + r"$(\tilde{E}, \tilde{c}, \tilde{\alpha})$",
+                 x=0.45)
     save(fig, os.path.join(folder, "campaign_points.png"))
 
 
+def mu_error_bars(rows):
+    """Each run's error bar on mu and what it is: the error of the mean (mu_error) where the
+    run has it, else the standard deviation of mu(t) (mu_std)."""
+    error, std = column(rows, "mu_error"), column(rows, "mu_std")
+    bars = np.where(np.isfinite(error), error, std)
+    from_std = int(np.sum(~np.isfinite(error) & np.isfinite(std)))
+    if from_std == 0:
+        what = r"error bars: error of the mean of $\mu$"
+    elif from_std == np.isfinite(bars).sum():
+        what = r"error bars: standard deviation of $\mu(t)$"
+    else:
+        what = (r"error bars: error of the mean of $\mu$; std of $\mu(t)$ for "
+                f"{from_std} runs without it")
+    return bars, what
+
+
 def plot_mu_vs_stress(rows, folder, campaign):
-    e, mu = column(rows, "stiffness_tilde"), column(rows, "mu")
+    e, mu, c = column(rows, "stiffness_tilde"), column(rows, "mu"), column(rows, "cohesion_tilde")
+    bars, what = mu_error_bars(rows)
     ok = np.isfinite(e) & np.isfinite(mu)
     fig, ax = plt.subplots(figsize=(6.4, 4.4), dpi=110)
-    ax.plot(10.0 ** -e[ok], mu[ok], "o")
+    stress = 10.0 ** -e
+    coloured = ok & np.isfinite(c)
+    norm = plt.Normalize(*(np.nanmin(c[coloured]), np.nanmax(c[coloured]))
+                         if coloured.any() else (0.0, 1.0))
+    cmap = plt.get_cmap("viridis")
+    for k in np.nonzero(ok)[0]:
+        colour = cmap(norm(c[k])) if np.isfinite(c[k]) else "grey"
+        ax.errorbar(stress[k], mu[k], yerr=bars[k] if np.isfinite(bars[k]) else None,
+                    fmt="o", color=colour, ecolor=colour, capsize=3, ms=6)
+    if coloured.any():
+        fig.colorbar(plt.cm.ScalarMappable(norm=norm, cmap=cmap), ax=ax,
+                     label=label_of("cohesion_tilde"))
     ax.set_xscale("log")
-    ax.set_xlabel("sigma_n / E = 10^-E~")
-    ax.set_ylabel("mu")
-    ax.set_title(f"{campaign}: mu against sigma_n / E ({int(ok.sum())} runs)")
+    ax.set_xlabel(r"$\bar{\sigma}_n / E = 10^{-\tilde{E}}$")
+    ax.set_ylabel(label_of("mu"))
+    ax.set_title(f"{campaign}: " + r"$\mu$ against $\bar{\sigma}_n / E$"
+                 + f" ({int(ok.sum())} runs)\n{what}", fontsize=10)
+    fig.tight_layout()
     save(fig, os.path.join(folder, "mu_vs_stress.png"))
 
 
-def plot_maps(rows, folder, campaign, alpha_step):
+def stiffness_groups(rows, step):
+    """Each run's E~ group for the fits of bulk_share_vs_cohesion.png: the E~ the campaign
+    requested (stiffness_tilde_requested), else the realized E~ rounded to `step`."""
+    requested = column(rows, "stiffness_tilde" + REQUESTED)
+    if np.isfinite(requested).any():
+        return requested, "requested"
+    e = column(rows, "stiffness_tilde")
+    return np.round(e / step) * step, "rounded"
+
+
+def fit_line(x, y):
+    """(a, b) of y = a + b x, least squares."""
+    b, a = np.polyfit(x, y, 1)
+    return a, b
+
+
+def fit_plane(c, e, y):
+    """(a, b, d, R^2) of y = a + b c + d e, least squares."""
+    design = np.column_stack([np.ones_like(c), c, e])
+    coefficients = np.linalg.lstsq(design, y, rcond=None)[0]
+    residual = y - design @ coefficients
+    total = np.sum((y - y.mean()) ** 2)
+    r2 = 1.0 - np.sum(residual ** 2) / total if total > 0 else math.nan
+    return (*coefficients, r2)
+
+
+def plot_bulk_share(rows, folder, campaign, step):
+    """Paper 001 Fig. 13: p_wb (%) against c~, coloured by E~, with linear fits."""
+    c, e = column(rows, "cohesion_tilde"), column(rows, "stiffness_tilde")
+    p_wb = 100.0 * column(rows, "bulk_share")
+    groups, grouping = stiffness_groups(rows, step)
+    ok = np.isfinite(c) & np.isfinite(e) & np.isfinite(p_wb)
+    fig, ax = plt.subplots(figsize=(7.2, 4.8), dpi=110)
+    cmap = plt.get_cmap("viridis")
+    norm = plt.Normalize(*(e[ok].min(), e[ok].max()) if ok.any() and np.ptp(e[ok]) > 0
+                         else (e[ok].min() - 1, e[ok].max() + 1) if ok.any() else (0, 1))
+    points = ax.scatter(c[ok], p_wb[ok], c=e[ok], cmap=cmap, norm=norm, s=40, zorder=3,
+                        edgecolors="k", linewidths=0.4)
+    fig.colorbar(points, ax=ax, label=label_of("stiffness_tilde"))
+    if not ok.any():
+        ax.text(0.5, 0.5, "no run has " + label_of("bulk_share") + r", $\tilde{c}$ and "
+                r"$\tilde{E}$", ha="center", transform=ax.transAxes)
+    fitted = 0
+    for g in sorted({v for v in groups[ok] if np.isfinite(v)}):
+        pick = ok & (groups == g)
+        if len(set(c[pick])) < 2:
+            continue  # one c~: no line
+        a, b = fit_line(c[pick], p_wb[pick])
+        span = np.array([c[pick].min(), c[pick].max()])
+        name = r"$\tilde{E}$ " + ("= " if grouping == "requested" else r"$\approx$ ") + f"{g:g}"
+        ax.plot(span, a + b * span, "-", color=cmap(norm(np.mean(e[pick]))), lw=1.2,
+                label=name + f": $p_{{wb}}$ = {a:.1f} {'+' if b >= 0 else '-'} {abs(b):.1f} "
+                r"$\tilde{c}$")
+        fitted += 1
+    if ok.sum() >= 4 and np.ptp(c[ok]) > 0 and np.ptp(e[ok]) > 0:
+        a, b, d, r2 = fit_plane(c[ok], e[ok], p_wb[ok])
+        ax.plot([], [], " ", label=f"plane: $p_{{wb}}$ = {a:.1f} {'+' if b >= 0 else '-'} "
+                f"{abs(b):.1f} " + r"$\tilde{c}$" + f" {'+' if d >= 0 else '-'} {abs(d):.1f} "
+                + r"$\tilde{E}$" + f" ($R^2$ = {r2:.2f})")
+        fitted += 1
+    if fitted:
+        ax.legend(fontsize=8, loc="best", title="linear fits (%)", title_fontsize=8)
+    ax.set_xlabel(label_of("cohesion_tilde"))
+    ax.set_ylabel(label_of("bulk_share") + " (%)")
+    ax.set_title(f"{campaign}: share of the dissipation in the bulk ({int(ok.sum())} runs)",
+                 fontsize=10)
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    save(fig, os.path.join(folder, "bulk_share_vs_cohesion.png"))
+
+
+def alpha_slices(rows, header, alpha_step):
+    """[(A, runs of the slice, how they were chosen)]: the runs that requested alpha~ = A
+    (viscosity_tilde_requested), else those whose realized alpha~ rounds to A; [(None, all
+    runs, "")] when alpha~ is unknown everywhere."""
+    if "viscosity_tilde" + REQUESTED in header:
+        requested = column(rows, "viscosity_tilde" + REQUESTED)
+        values = sorted({v for v in requested if np.isfinite(v)})
+        if values:
+            return [(v, requested == v, "requested") for v in values]
+    a = column(rows, "viscosity_tilde")
+    values = sorted({round(v / alpha_step) * alpha_step for v in a if np.isfinite(v)})
+    if not values:
+        return [(None, np.ones(a.size, dtype=bool), "")]
+    return [(v, np.isfinite(a) & (np.abs(a - v) <= alpha_step / 2 + 1e-12), "rounded")
+            for v in values]
+
+
+def minus(text):
+    """A number's hyphen as the minus sign (U+2212), as in the papers' titles."""
+    return text.replace("-", "\u2212")
+
+
+def slice_title(alpha, realized, how, alpha_step):
+    """The realized range of alpha~ over a slice, and what chose its runs."""
+    if alpha is None:
+        return ""
+    known = realized[np.isfinite(realized)]
+    shown = (r"$\tilde{\alpha} \in$" + minus(f" [{known.min():.2f}, {known.max():.2f}]")
+             if known.size else r"$\tilde{\alpha}$ not measured")
+    if how == "requested":
+        return f", {shown} (requested {minus(f'{alpha:g}')})"
+    return f", {shown} (realized within {alpha_step / 2:g} of {minus(f'{alpha:g}')})"
+
+
+def plot_maps(rows, header, folder, campaign, alpha_step):
     from scipy.interpolate import griddata
     e, c, a = (column(rows, k) for k in ("stiffness_tilde", "cohesion_tilde", "viscosity_tilde"))
-    slices = sorted({round(v / alpha_step) * alpha_step for v in a if np.isfinite(v)})
     written = []
-    for alpha in slices or [None]:
-        pick = np.isfinite(e) & np.isfinite(c)
-        if alpha is not None:
-            pick &= np.isfinite(a) & (np.abs(a - alpha) <= alpha_step / 2 + 1e-12)
+    for alpha, in_slice, how in alpha_slices(rows, header, alpha_step):
+        pick = in_slice & np.isfinite(e) & np.isfinite(c)
         name = "maps.png" if alpha is None else f"maps_alpha={alpha:g}.png"
         fig, axes = plt.subplots(2, 3, figsize=(13, 7.6), dpi=100)
         ex, cx = e[pick], c[pick]
         span = lambda v: (v.min(), v.max()) if v.size and np.ptp(v) > 0 else (-1.0, 1.0)
         xi, yi = np.meshgrid(np.linspace(*span(ex), 80), np.linspace(*span(cx), 80))
-        for ax, (key, title) in zip(axes.flat, MAP_QUANTITIES):
+        left_out = []
+        drawn = 0
+        for key in MAP_QUANTITIES:
             z = column(rows, key)[pick]
+            why = why_no_map(ex, cx, z)
+            if why:
+                left_out.append(f"{label_of(key)}: {why}")
+                continue
+            ax = axes.flat[drawn]
+            drawn += 1
             ok = np.isfinite(z)
-            ax.set_title(title)
-            ax.set_xlabel("E~")
-            ax.set_ylabel("c~")
-            if ok.sum() >= 3 and np.ptp(ex[ok]) > 0 and np.ptp(cx[ok]) > 0:
-                zi = griddata((ex[ok], cx[ok]), z[ok], (xi, yi), method="linear")
-                mesh = ax.pcolormesh(xi, yi, np.ma.masked_invalid(zi), cmap="viridis",
-                                     shading="auto")
-                fig.colorbar(mesh, ax=ax)
-            else:
-                ax.text(0.5, 0.5, f"{int(ok.sum())} runs with {key}: no map",
-                        transform=ax.transAxes, ha="center")
+            zi = griddata((ex[ok], cx[ok]), z[ok], (xi, yi), method="linear")
+            mesh = ax.pcolormesh(xi, yi, np.ma.masked_invalid(zi), cmap="viridis",
+                                 shading="auto")
+            fig.colorbar(mesh, ax=ax)
             ax.plot(ex, cx, "k.", ms=6)
-        axes.flat[-1].axis("off")
-        fig.suptitle(f"{campaign}: maps over (E~, c~)"
-                     + ("" if alpha is None else f", alpha~ = {alpha:g}"))
-        fig.tight_layout()
+            ax.set_title(label_of(key))
+            ax.set_xlabel(label_of("stiffness_tilde"))
+            ax.set_ylabel(label_of("cohesion_tilde"))
+        for ax in axes.flat[drawn:]:
+            ax.axis("off")
+        if drawn == 0:
+            axes.flat[0].text(0.5, 0.5, "no quantity to map", transform=axes.flat[0].transAxes,
+                              ha="center")
+        fig.suptitle(f"{campaign}: maps over " + r"$(\tilde{E}, \tilde{c})$"
+                     + slice_title(alpha, a[in_slice], how, alpha_step))
+        fig.tight_layout(rect=(0, note_left_out(fig, left_out), 1, 1))
         save(fig, os.path.join(folder, name))
         written.append(name)
     return written
 
 
-def plot_correlations(rows, header, folder, campaign, pairs):
-    pairs = [(x, y) for x, y in pairs if x in header and y in header]
-    table = [("x", "y", "n", "pearson", "spearman")]
-    cols = max(1, min(3, len(pairs)))
-    lines = max(1, math.ceil(len(pairs) / cols))
-    fig, axes = plt.subplots(lines, cols, figsize=(4.4 * cols, 3.8 * lines), dpi=100,
-                             squeeze=False)
-    for ax, (xk, yk) in zip(axes.flat, pairs):
+def correlation_table(rows, pairs):
+    """[(x, y, n, r, rho, why no panel or None)] for every pair."""
+    table = []
+    for xk, yk in pairs:
         x, y = column(rows, xk), column(rows, yk)
         n, r, rho = correlation(x, y)
-        table.append((xk, yk, str(n), "" if math.isnan(r) else repr(r),
-                      "" if math.isnan(rho) else repr(rho)))
-        ax.plot(x, y, "o")
-        ax.set_xlabel(xk)
-        ax.set_ylabel(yk)
-        ax.set_title(f"r = {r:.2f}, rho = {rho:.2f} (n = {n})", fontsize=10)
-    for ax in list(axes.flat)[len(pairs):]:
+        why = why_no_panel(x, y, (label_of(xk), label_of(yk)))
+        table.append((xk, yk, n, r, rho, why))
+    return table
+
+
+def correlation_grid(panels):
+    """(columns, lines) of correlations.png for `panels` panels (one panel at least)."""
+    cols = max(1, min(3, panels))
+    return cols, max(1, math.ceil(panels / cols))
+
+
+def plot_correlations(rows, header, folder, campaign, pairs):
+    pairs = [(x, y) for x, y in pairs if x in header and y in header]
+    table = correlation_table(rows, pairs)
+    shown = [t for t in table if t[5] is None]
+    cols, lines = correlation_grid(len(shown))
+    fig, axes = plt.subplots(lines, cols, figsize=(4.4 * cols, 3.8 * lines), dpi=100,
+                             squeeze=False)
+    share = column(rows, "grain_share_in_structures")
+    for ax, (xk, yk, n, r, rho, _) in zip(axes.flat, shown):
+        x, y = column(rows, xk), column(rows, yk)
+        if (xk, yk) in SIZED_BY_GRAIN_SHARE and np.isfinite(share).any():
+            sizes = 10.0 + 400.0 * np.nan_to_num(share)
+            ax.scatter(x, y, s=sizes, alpha=0.7, edgecolors="k", linewidths=0.4)
+            ax.text(0.02, 0.02, "dot size: share of grains in structures",
+                    transform=ax.transAxes, fontsize=7, color="0.3")
+        else:
+            ax.plot(x, y, "o")
+        ax.xaxis.set_major_locator(MaxNLocator(5))  # a narrow range has long tick labels
+        ax.set_xlabel(label_of(xk))
+        ax.set_ylabel(label_of(yk))
+        ax.set_title(f"r = {r:.2f}, " + r"$\rho$" + f" = {rho:.2f} (n = {n})", fontsize=10)
+        ax.grid(alpha=0.3)
+    for ax in list(axes.flat)[len(shown):]:
         ax.axis("off")
+    if not shown:
+        axes.flat[0].text(0.5, 0.5, "no pair with coefficients", ha="center",
+                          transform=axes.flat[0].transAxes)
     fig.suptitle(f"{campaign}: correlations between the runs' quantities")
-    fig.tight_layout()
+    left_out = [f"{label_of(t[1])} against {label_of(t[0])}: {t[5]}" for t in table if t[5]]
+    fig.tight_layout(rect=(0, note_left_out(fig, left_out), 1, 1))
     save(fig, os.path.join(folder, "correlations.png"))
     path = os.path.join(folder, "correlations.csv")
+    lines_out = [("x", "y", "n", "pearson", "spearman")]
+    for xk, yk, n, r, rho, _ in table:
+        lines_out.append((xk, yk, str(n), "" if math.isnan(r) else repr(r),
+                          "" if math.isnan(rho) else repr(rho)))
     with open(path + ".tmp", "w", newline="") as f:
-        csv.writer(f, lineterminator="\n").writerows(table)
+        csv.writer(f, lineterminator="\n").writerows(lines_out)
     os.replace(path + ".tmp", path)
     print(path)
 
@@ -245,7 +537,8 @@ def campaign_figures(rows, header, table_path, pairs, alpha_step):
     campaign = os.path.basename(folder)
     plot_points(rows, folder, campaign)
     plot_mu_vs_stress(rows, folder, campaign)
-    plot_maps(rows, folder, campaign, alpha_step)
+    plot_bulk_share(rows, folder, campaign, alpha_step)
+    plot_maps(rows, header, folder, campaign, alpha_step)
     plot_correlations(rows, header, folder, campaign, pairs)
 
 
@@ -304,8 +597,8 @@ def main():
             ax.annotate(annotate(m, 1), (p, m if not math.isnan(m) else 0),
                         textcoords="offset points", xytext=(0, 6), ha="center")
         ax.set_xticks(positions, [label(v) for v in xs])
-        ax.set_xlabel(x_key)
-        ax.set_ylabel(z_key)
+        ax.set_xlabel(label_of(x_key))
+        ax.set_ylabel(label_of(z_key))
     else:
         ys = sort_values([r[y_key] for r in rows])
         grid = np.full((len(ys), len(xs)), math.nan)
@@ -333,10 +626,10 @@ def main():
         ax.set_yticks(range(len(ys)), [label(v) for v in ys])
         ax.set_xlim(-0.5, len(xs) - 0.5)
         ax.set_ylim(-0.5, len(ys) - 0.5)
-        ax.set_xlabel(x_key)
-        ax.set_ylabel(y_key)
-        fig.colorbar(mesh, ax=ax, label=z_key)
-    ax.set_title(f"{campaign}: {z_key} ({done} of {len(rows)} runs done)")
+        ax.set_xlabel(label_of(x_key))
+        ax.set_ylabel(label_of(y_key))
+        fig.colorbar(mesh, ax=ax, label=label_of(z_key))
+    ax.set_title(f"{campaign}: {label_of(z_key)} ({done} of {len(rows)} runs done)")
     fig.tight_layout()
     fig.savefig(output, metadata=metadata())
     plt.close(fig)

@@ -2,6 +2,7 @@
 """Plots of a run folder analysed by `softgrain analyze`, drawn into RUN_DIR/analysis/.
 
     /usr/bin/python3 scripts/plot_run.py RUN_DIR      (softgrain analyze --plots runs it)
+    /usr/bin/python3 scripts/plot_run.py RUN_DIR --snapshot velocity_x=PNG ...
 
 Reads what `softgrain run` and `softgrain analyze` wrote and draws, each when its inputs
 are there (otherwise it says why and goes on):
@@ -23,10 +24,21 @@ are there (otherwise it says why and goes on):
                        x-t and y-t, red where C > 0 (counter-clockwise), blue where C < 0
                        (clockwise, with the shear) (paper 002 Fig. 8C; agglomerate_space_time.csv)
   cylinders.png        each detected structure as a cylinder in (x, y, t): axis at its centre,
-                       height = lifetime, diameter = mean-area diameter, coloured by omega~
+                       height = lifetime, diameter = mean-area diameter, red when it turns
+                       counter-clockwise, blue clockwise, the deeper the larger |omega~|;
+                       x and y on one scale, so that a cylinder's section is a circle
                        (paper 002 Figs 9, 10, 14; agglomerate_cylinders.csv)
   att.png              activated third-body thickness against time, from the velocity map and
                        from the profile, the window means as lines (paper 003 Fig. 13; att.csv)
+  composite.png        shear cells: the run on one page, in the manner of paper 001 Figs 6-12:
+                       on the left the layer at the last field snapshot coloured by the
+                       horizontal velocity, the strain rate and the von Mises stress; on the
+                       right the run's place in (E~, c~, alpha~) (realized, and requested when
+                       the run belongs to a campaign: summary.json "campaign"), mu(t) with its
+                       window, and the velocity profiles. The snapshots are the PNGs given
+                       with --snapshot FIELD=PNG (softgrain analyze draws them into
+                       RUN_DIR/render/), else the newest RUN_DIR/render/FIELD_NNNNNN.png; a
+                       missing one is said in its place (--snapshot-note TEXT: why)
 
 Needs numpy and matplotlib (Debian: python3-numpy, python3-matplotlib). Each picture is
 written to a temporary file and renamed, so a reader never sees half a PNG, and names in its
@@ -34,6 +46,7 @@ PNG "Software" text the softgrain version and commit that wrote summary.json. Ex
 if every picture whose inputs exist was drawn, 1 on an error (one line on stderr).
 """
 
+import argparse
 import csv
 import json
 import math
@@ -130,24 +143,34 @@ def save(fig, path):
     return path
 
 
-def plot_mu(run_dir, analysis_dir, summary):
+def read_mu_series(run_dir):
+    """(time, {body: mu(t)}) of the first bodies, or None for a run without them."""
     path = os.path.join(run_dir, "series.csv")
     series = read_csv(path)
     # docs/analysis.md: Fn = n B_fy, Ft = -s B_fx; top s = n = +1, bottom s = n = -1.
     bodies = [("top", 1.0, 1.0), ("bottom", -1.0, -1.0)]
     if not all(f"{b}_fx" in series and f"{b}_fy" in series for b, _, _ in bodies):
-        return None, "no mu(t): series.csv has no 'top' and 'bottom' columns (not a shear cell)"
+        return None
     t = numbers(path, series, "time")
-    fig, ax = plt.subplots(figsize=(8, 4.2))
-    t0, t1 = value(summary, "window_begin"), value(summary, "window_end")
-    if t0 is not None and t1 is not None:
-        ax.axvspan(t0, t1, color="0.9", label=f"window [{t0:.3g}, {t1:.3g}]")
-    colours = {"top": "tab:red", "bottom": "tab:blue"}
+    mu = {}
     for body, s, n in bodies:
         fn = n * numbers(path, series, f"{body}_fy")
         ft = -s * numbers(path, series, f"{body}_fx")
         with np.errstate(divide="ignore", invalid="ignore"):
-            mu = np.where(fn > 0.0, ft / fn, np.nan)  # undefined while nothing presses
+            mu[body] = np.where(fn > 0.0, ft / fn, np.nan)  # undefined while nothing presses
+    return t, mu
+
+
+NO_MU = "no mu(t): series.csv has no 'top' and 'bottom' columns (not a shear cell)"
+
+
+def draw_mu(ax, t, mu_of, summary, legend_size=8, columns=1):
+    """mu(t) of both first bodies, the steady window shaded, the window means as lines."""
+    t0, t1 = value(summary, "window_begin"), value(summary, "window_end")
+    if t0 is not None and t1 is not None:
+        ax.axvspan(t0, t1, color="0.9", label=f"window [{t0:.3g}, {t1:.3g}]")
+    colours = {"top": "tab:red", "bottom": "tab:blue"}
+    for body, mu in mu_of.items():
         ax.plot(t, mu, lw=0.8, color=colours[body], label=f"{body}")
         mean = value(summary, f"{body}_mu")
         if mean is not None and t0 is not None:
@@ -164,23 +187,42 @@ def plot_mu(run_dir, analysis_dir, summary):
         pad = 0.1 * max(hi - lo, 1e-3)
         ax.set_ylim(lo - pad, hi + pad)
     ax.set_xlabel("time")
-    ax.set_ylabel("mu = Ft / Fn")
+    ax.set_ylabel(r"$\mu = F_t / F_n$")
+    ax.legend(fontsize=legend_size, loc="best", ncol=columns)
+
+
+def plot_mu(run_dir, analysis_dir, summary):
+    read = read_mu_series(run_dir)
+    if read is None:
+        return None, NO_MU
+    fig, ax = plt.subplots(figsize=(8, 4.2))
+    draw_mu(ax, *read, summary)
     ax.set_title("friction coefficient of the first bodies")
-    ax.legend(fontsize=8, loc="best")
     fig.tight_layout(rect=(0, 0.05, 1, 1) if note_warnings(fig, summary) else None)
     return save(fig, os.path.join(analysis_dir, "mu.png")), None
 
 
-def plot_profiles(analysis_dir):
+def read_profiles(analysis_dir):
+    """(y, {component: (mean, std)}) of analysis/profiles.csv, or None if it is missing."""
     path = os.path.join(analysis_dir, "profiles.csv")
     if not os.path.exists(path):
-        return None, "no profiles: analysis/profiles.csv is missing"
+        return None
     p = read_csv(path)
-    y = numbers(path, p, "y_center")
+    return numbers(path, p, "y_center"), {
+        comp: (numbers(path, p, f"{comp}_mean"), numbers(path, p, f"{comp}_std"))
+        for comp in ("vx", "vy")}
+
+
+NO_PROFILES = "no profiles: analysis/profiles.csv is missing"
+
+
+def plot_profiles(analysis_dir):
+    read = read_profiles(analysis_dir)
+    if read is None:
+        return None, NO_PROFILES
+    y, profiles = read
     fig, axes = plt.subplots(1, 2, figsize=(8, 4.2), sharey=True)
-    for ax, comp in zip(axes, ("vx", "vy")):
-        mean = numbers(path, p, f"{comp}_mean")
-        std = numbers(path, p, f"{comp}_std")
+    for ax, (comp, (mean, std)) in zip(axes, profiles.items()):
         ax.fill_betweenx(y, mean - std, mean + std, color="tab:blue", alpha=0.25,
                          label="mean +- std")
         ax.plot(mean, y, "o-", color="tab:blue", ms=3, lw=1.2, label="mean")
@@ -315,39 +357,70 @@ def plot_space_time(analysis_dir):
     return save(fig, os.path.join(analysis_dir, "space_time.png")), None
 
 
+def rotation_colour(sign, omega, omega_max):
+    """Red for a structure turning counter-clockwise (C > 0), blue clockwise (C < 0), as
+    paper 002 Fig. 14; the deeper, the larger |omega~| (a floor keeps the slowest visible).
+    Grey when the sign is unknown."""
+    if not np.isfinite(sign) or sign == 0:
+        return "grey"
+    depth = 0.6 if not np.isfinite(omega) else 0.25 + 0.75 * min(abs(omega) / omega_max, 1.0)
+    return plt.get_cmap("Reds" if sign > 0 else "Blues")(depth)
+
+
 def plot_cylinders(analysis_dir):
     path = os.path.join(analysis_dir, "agglomerate_cylinders.csv")
     if not os.path.exists(path):
         return None, "no cylinders: analysis/agglomerate_cylinders.csv is missing"
     c = read_csv(path)
-    x, y, t0, h, d, w, sign = (numbers(path, c, k) for k in (
-        "x_center", "y_center", "t_bottom", "height", "diameter", "omega_tilde", "sign"))
+    fig = cylinders_figure(*(numbers(path, c, k) for k in (
+        "x_center", "y_center", "t_bottom", "height", "diameter", "omega_tilde", "sign")))
+    return save(fig, os.path.join(analysis_dir, "cylinders.png")), None
+
+
+def cylinders_figure(x, y, t0, h, d, w, sign):
+    """The structures as cylinders in (x, y, t) (paper 002 Fig. 14)."""
     fig = plt.figure(figsize=(8, 6))
-    ax = fig.add_subplot(projection="3d")
-    known = np.isfinite(w)
-    colour_of = sign if not known.any() else np.where(known, w, np.nan)
-    finite = colour_of[np.isfinite(colour_of)]
-    lo, hi = (finite.min(), finite.max()) if finite.size else (-1.0, 1.0)
-    if hi <= lo:
-        lo, hi = lo - 1.0, hi + 1.0
-    cmap = plt.get_cmap("coolwarm")
+    # The 3D axes leave room on the left for the z label and on the right for the two colour
+    # bars (inside the figure's own box: the label was clipped to "tim").
+    ax = fig.add_axes((0.0, 0.04, 0.80, 0.86), projection="3d")
+    finite_w = np.abs(w[np.isfinite(w)])
+    omega_max = max(float(finite_w.max()), 1e-12) if finite_w.size else 1.0
     theta = np.linspace(0, 2 * np.pi, 24)
     for k in range(x.size):
         z = np.array([t0[k], t0[k] + h[k]])
         th, zz = np.meshgrid(theta, z)
-        value = colour_of[k]
-        colour = cmap((value - lo) / (hi - lo)) if np.isfinite(value) else "grey"
         ax.plot_surface(x[k] + 0.5 * d[k] * np.cos(th), y[k] + 0.5 * d[k] * np.sin(th), zz,
-                        color=colour, alpha=0.8, linewidth=0)
+                        color=rotation_colour(sign[k], w[k], omega_max), alpha=0.85,
+                        linewidth=0, shade=False)
+    if x.size:
+        # x and y on one scale (a section is a circle); time as tall as half the widest side.
+        x_lo, x_hi = np.min(x - 0.5 * d), np.max(x + 0.5 * d)
+        y_lo, y_hi = np.min(y - 0.5 * d), np.max(y + 0.5 * d)
+        z_lo, z_hi = np.min(t0), np.max(t0 + h)
+        dx, dy = max(x_hi - x_lo, 1e-9), max(y_hi - y_lo, 1e-9)
+        ax.set_xlim(x_lo, x_hi)
+        ax.set_ylim(y_lo, y_hi)
+        ax.set_zlim(z_lo, z_hi if z_hi > z_lo else z_lo + 1.0)
+        ax.set_box_aspect((dx, dy, 0.5 * max(dx, dy)), zoom=0.9)
+    else:
+        ax.text2D(0.5, 0.5, "no structure", ha="center", transform=ax.transAxes)
     ax.set_xlabel("x")
     ax.set_ylabel("y")
-    ax.set_zlabel("time")
-    mappable = plt.cm.ScalarMappable(cmap=cmap, norm=plt.Normalize(lo, hi))
-    fig.colorbar(mappable, ax=ax, shrink=0.7,
-                 label="omega~" if known.any() else "sign of rotation")
-    ax.set_title(f"{x.size} structures: height = lifetime, diameter = mean-area diameter",
-                 fontsize=10)
-    return save(fig, os.path.join(analysis_dir, "cylinders.png")), None
+    ax.set_zlabel("time", labelpad=6)
+    # Two colour bars back to back, their labels outside: red on the left, blue on the right.
+    for k, (cmap, label, side) in enumerate((("Reds", "counter-clockwise (C > 0)", "left"),
+                                             ("Blues", "clockwise (C < 0)", "right"))):
+        bar = fig.add_axes((0.855 + 0.035 * k, 0.15, 0.025, 0.65))
+        colours = plt.get_cmap(cmap)(np.linspace(0.25, 1.0, 256))
+        mappable = plt.cm.ScalarMappable(
+            cmap=matplotlib.colors.ListedColormap(colours), norm=plt.Normalize(0.0, omega_max))
+        fig.colorbar(mappable, cax=bar)
+        bar.yaxis.set_ticks_position(side)
+        bar.yaxis.set_label_position(side)
+        bar.set_ylabel(r"$|\tilde{\omega}|$, " + label, fontsize=9)
+    fig.suptitle(f"{x.size} structures: height = lifetime, diameter = mean-area diameter",
+                 fontsize=10, x=0.42, y=0.97)
+    return fig
 
 
 def plot_att(analysis_dir, summary):
@@ -372,11 +445,166 @@ def plot_att(analysis_dir, summary):
     return save(fig, os.path.join(analysis_dir, "att.png")), None
 
 
+# The composite's snapshots, top to bottom (softgrain analyze draws them: render/
+# composite_snapshots.h), with their titles.
+COMPOSITE_FIELDS = [("velocity_x", r"horizontal velocity $v_x$"),
+                    ("strain_rate", "strain rate"),
+                    ("von_mises", "von Mises stress")]
+COORDINATES = [("stiffness_tilde", r"$\tilde{E}$"), ("cohesion_tilde", r"$\tilde{c}$"),
+               ("viscosity_tilde", r"$\tilde{\alpha}$")]
+
+
+def newest_render(run_dir, field):
+    """RUN_DIR/render/<field>_NNNNNN.png of the largest NNNNNN (the last frame), or None."""
+    folder = os.path.join(run_dir, "render")
+    if not os.path.isdir(folder):
+        return None
+    numbered = [f for f in os.listdir(folder) if f.startswith(field + "_")
+                and f.endswith(".png") and f[len(field) + 1:-4].isdigit()]
+    return os.path.join(folder, max(numbered)) if numbered else None
+
+
+def composite_snapshots(run_dir, given, notes):
+    """{field: PNG} and the notes of the missing ones. Given snapshots (--snapshot,
+    --snapshot-note) are taken as they are; without any, the newest render/ pictures."""
+    if given or notes:
+        return dict(given), list(notes)
+    found, missing = {}, []
+    for field, _ in COMPOSITE_FIELDS:
+        png = newest_render(run_dir, field)
+        if png:
+            found[field] = png
+        else:
+            missing.append(f"no {field} snapshot in render/ (softgrain render RUN_DIR "
+                           f"--field {field} --frames last)")
+    return found, missing
+
+
+def draw_snapshot(ax, field, title, png, notes):
+    ax.set_axis_off()
+    ax.set_title(f"{title}, last snapshot", fontsize=9, loc="left")
+    if png and os.path.exists(png):
+        ax.imshow(plt.imread(png), interpolation="antialiased")
+        return
+    # The notes about this field, else the general ones (no fields.pvd, ...).
+    fields = [f for f, _ in COMPOSITE_FIELDS]
+    mine = [n for n in notes if field in n]
+    general = [n for n in notes if not any(f in n for f in fields)]
+    text = "\n".join(mine or general or [f"no {field} snapshot"])
+    ax.text(0.5, 0.5, text, ha="center", va="center", fontsize=8, wrap=True,
+            transform=ax.transAxes, color="0.3")
+
+
+def coordinates_of(summary):
+    """(realized, requested) dicts of E~, c~, alpha~ (None where unknown; requested empty
+    unless the run belongs to a campaign that asked for coordinates)."""
+    campaign = summary.get("campaign") or {}
+    requested = campaign.get("requested") or {}
+    realized = {k: value(summary, k) for k, _ in COORDINATES}
+    return realized, {k: requested.get(k) for k, _ in COORDINATES if requested.get(k) is not None}
+
+
+def draw_place(fig, cell, summary):
+    """The run's place in (E~, c~, alpha~) (paper 001 Figs 6-12, top right): realized as a
+    dot, requested (a campaign's run) as a ring, joined by a dashed line."""
+    realized, requested = coordinates_of(summary)
+    words = ", ".join(f"{label} = " + ("-" if realized[k] is None else f"{realized[k]:.2f}")
+                      for k, label in COORDINATES)
+    if any(v is None for v in realized.values()):
+        ax = fig.add_subplot(cell)
+        ax.set_axis_off()
+        ax.text(0.5, 0.5, "place in the parameter space unknown:\n" + words
+                + "\n(needs E, c, alpha and the normal stress)", ha="center", va="center",
+                fontsize=9, transform=ax.transAxes)
+        return
+    ax = fig.add_subplot(cell, projection="3d")
+    point = [realized[k] for k, _ in COORDINATES]
+    ax.scatter(*[[v] for v in point], color="tab:red", s=50, depthshade=False,
+               label="realized: " + ", ".join(f"{v:.2f}" for v in point))
+    points = [point]
+    if len(requested) == len(COORDINATES):
+        asked = [requested[k] for k, _ in COORDINATES]
+        points.append(asked)
+        ax.scatter(*[[v] for v in asked], facecolors="none", edgecolors="k", s=60,
+                   depthshade=False, label="requested: " + ", ".join(f"{v:g}" for v in asked))
+        ax.plot(*[[a, b] for a, b in zip(point, asked)], "k--", lw=0.8)
+    # A floor line shows the height in alpha~; the box is at least one unit wide each way.
+    points = np.array(points)
+    lo, hi = points.min(axis=0) - 0.5, points.max(axis=0) + 0.5
+    ax.plot([point[0]] * 2, [point[1]] * 2, [lo[2], point[2]], color="tab:red", lw=0.8, ls=":")
+    ax.set_xlim(lo[0], hi[0])
+    ax.set_ylim(lo[1], hi[1])
+    ax.set_zlim(lo[2], hi[2])
+    for setter, (_, label) in zip((ax.set_xlabel, ax.set_ylabel, ax.set_zlabel), COORDINATES):
+        setter(label)
+    ax.tick_params(labelsize=7)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(0.0, 1.12))
+
+
+def plot_composite(run_dir, analysis_dir, summary, given, notes):
+    """The run on one page, in the manner of paper 001 Figs 6-12 (shear cells only)."""
+    mu_series = read_mu_series(run_dir)
+    if mu_series is None:
+        return None, None  # not a shear cell: nothing to compose, nothing to say
+    snapshots, notes = composite_snapshots(run_dir, given, notes)
+    # Left, three rows of about 9 x 2.4 inches: a 1200 x 300 snapshot (render/
+    # composite_snapshots.cpp) shown at about 0.8 of its pixels.
+    fig = plt.figure(figsize=(16, 10))
+    grid = fig.add_gridspec(3, 2, width_ratios=(1.75, 1.0), left=0.01, right=0.98,
+                            top=0.92, bottom=0.07, wspace=0.12, hspace=0.3)
+    for row, (field, title) in enumerate(COMPOSITE_FIELDS):
+        draw_snapshot(fig.add_subplot(grid[row, 0]), field, title, snapshots.get(field), notes)
+    draw_place(fig, grid[0, 1], summary)
+    ax = fig.add_subplot(grid[1, 1])
+    draw_mu(ax, *mu_series, summary, legend_size=7, columns=2)
+    ax.set_title("friction coefficient of the first bodies", fontsize=9)
+    ax = fig.add_subplot(grid[2, 1])
+    profiles = read_profiles(analysis_dir)
+    if profiles is None:
+        ax.text(0.5, 0.5, NO_PROFILES, ha="center", va="center", transform=ax.transAxes)
+    else:
+        y, p = profiles
+        for comp, colour, label in (("vx", "tab:blue", "$v_x$"), ("vy", "tab:orange", "$v_y$")):
+            mean, std = p[comp]
+            ax.fill_betweenx(y, mean - std, mean + std, color=colour, alpha=0.2)
+            ax.plot(mean, y, "o-", color=colour, ms=2.5, lw=1.1, label=label + " (mean ± std)")
+        ax.axvline(0.0, color="0.6", lw=0.8)
+        ax.legend(fontsize=7)
+    ax.set_xlabel("velocity (length/time)")
+    ax.set_ylabel("y (length)")
+    ax.set_title("velocity profiles across the gap (window)", fontsize=9)
+    ax.grid(alpha=0.3)
+    mu, error = value(summary, "mu"), value(summary, "mu_error")
+    name = os.path.basename(os.path.normpath(summary.get("run") or run_dir))
+    headline = name + ": " + (r"$\mu$ not measured" if mu is None else rf"$\mu$ = {mu:.3f}"
+                              + ("" if error is None else f" ± {error:.3f} (error of the mean)"))
+    fig.suptitle(headline, fontsize=12)
+    note_warnings(fig, summary)
+    return (save(fig, os.path.join(analysis_dir, "composite.png")),
+            "; ".join(f"composite: {n}" for n in notes) or None)
+
+
+def parse_arguments(argv):
+    parser = argparse.ArgumentParser(prog=os.path.basename(argv[0]),
+                                     description="Plots of an analysed run folder.")
+    parser.add_argument("run_dir", help="run folder analysed by softgrain analyze")
+    parser.add_argument("--snapshot", action="append", default=[], metavar="FIELD=PNG",
+                        help="a snapshot of the composite figure (repeatable)")
+    parser.add_argument("--snapshot-note", action="append", default=[], metavar="TEXT",
+                        help="why a snapshot of the composite is missing (repeatable)")
+    args = parser.parse_args(argv[1:])
+    given = {}
+    for item in args.snapshot:
+        field, sep, png = item.partition("=")
+        if not sep or field not in dict(COMPOSITE_FIELDS):
+            parser.error(f"--snapshot '{item}': expected FIELD=PNG with FIELD one of "
+                         + ", ".join(f for f, _ in COMPOSITE_FIELDS))
+        given[field] = png
+    return args.run_dir, given, args.snapshot_note
+
+
 def main(argv):
-    if len(argv) != 2:
-        print(f"usage: {argv[0]} RUN_DIR", file=sys.stderr)
-        return 2
-    run_dir = argv[1]
+    run_dir, given, notes = parse_arguments(argv)
     analysis_dir = os.path.join(run_dir, "analysis")
     try:
         summary = read_summary(analysis_dir)
@@ -390,10 +618,13 @@ def main(argv):
                      lambda: plot_compaction(analysis_dir),
                      lambda: plot_space_time(analysis_dir),
                      lambda: plot_cylinders(analysis_dir),
-                     lambda: plot_att(analysis_dir, summary)):
+                     lambda: plot_att(analysis_dir, summary),
+                     lambda: plot_composite(run_dir, analysis_dir, summary, given, notes)):
             path, why = draw()
-            if path or why:
-                (written if path else skipped).append(path or why)
+            if path:
+                written.append(path)
+            if why:
+                skipped.append(why)
     except (PlotError, OSError, ValueError, KeyError) as e:
         print(f"plot_run.py: {e}", file=sys.stderr)
         return 1

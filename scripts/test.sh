@@ -48,6 +48,7 @@ labels=$(IFS='|'; echo "fuzz|odr|${fast_modules[*]}")
 # under ASan) repeat code that the non-periodic brute-force check and the other packings of the
 # pass run in seconds.
 slow_under_sanitizers=('CampaignPlan\.ProjectedWallTime' 'PaperCampaign\.ATinyCampaign'
+                       'CampaignFigures\.TheExampleCampaign'
                        'Packing\.Paper003Mixture' 'PressureExamples\.TheServoLoads'
                        'PressureExamples\.TheExampleCampaignsPlan'
                        'BroadPhase\.NoMissedPairVersusBruteForcePeriodic'

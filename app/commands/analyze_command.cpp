@@ -6,6 +6,7 @@
 #include "command_registry.h"
 #include "core/exit_status.h"
 #include "io/run_directory.h"
+#include "render/composite_snapshots.h"
 #include "render/plot_runner.h"
 #include "report/analyze_run.h"
 
@@ -27,8 +28,25 @@ struct AnalyzeArguments {
   bool plots = false, no_plots = false;
 };
 
-// Runs scripts/plot_run.py (render/plot_runner.h). Asked for (--plots) and impossible is
-// an error; by default, a missing matplotlib or script is only reported.
+// The composite figure's snapshots (render/composite_snapshots.h) as plot_run.py's
+// arguments: --snapshot FIELD=PNG for each picture, --snapshot-note TEXT for each failure.
+std::vector<std::string> composite_arguments(const std::string& run_dir) {
+  const CompositeSnapshots snapshots = render_composite_snapshots(run_dir);
+  std::vector<std::string> arguments;
+  for (const auto& [field, png] : snapshots.pictures) {
+    arguments.push_back("--snapshot");
+    arguments.push_back(field + "=" + png.string());
+  }
+  for (const std::string& note : snapshots.notes) {
+    arguments.push_back("--snapshot-note");
+    arguments.push_back(note);
+  }
+  return arguments;
+}
+
+// Runs scripts/plot_run.py (render/plot_runner.h), after drawing the snapshots of its
+// composite figure. Asked for (--plots) and impossible is an error; by default, a missing
+// matplotlib or script is only reported.
 int draw_plots(const std::string& run_dir, bool asked) {
   if (!python_has_matplotlib()) {
     std::cout << "plots: skipped: " << kPlotPython
@@ -45,7 +63,7 @@ int draw_plots(const std::string& run_dir, bool asked) {
     std::cout << ")\n";
     return asked ? 1 : 0;
   }
-  const int status = run_plot_script(*script, run_dir);
+  const int status = run_plot_script(*script, run_dir, composite_arguments(run_dir));
   if (status != 0)
     std::cout << "plots: " << script->string() << " failed (exit status " << status << ")\n";
   return status == 0 ? 0 : 1;
@@ -92,8 +110,10 @@ const Registration registration(
            ->capture_default_str();
        CLI::Option* plots = cmd->add_flag(
            "--plots", a->plots,
-           "draw mu(t), profiles, energy shares, agglomerate PDFs, the compaction curve into "
-           "RUN_DIR/analysis/*.png "
+           "draw mu(t), profiles, energy shares, agglomerate PDFs, the compaction curve and, "
+           "for a shear cell, the composite figure (the last frame's velocity, strain rate "
+           "and stress, drawn into RUN_DIR/render/, beside mu(t), the profiles and the run's "
+           "place in (E~, c~, alpha~)) into RUN_DIR/analysis/*.png "
            "(default: on when /usr/bin/python3 imports matplotlib)");
        cmd->add_flag("--no-plots", a->no_plots, "no plots")->excludes(plots);
        return std::function<int()>([a, &options] {

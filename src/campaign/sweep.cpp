@@ -151,8 +151,9 @@ void plot(const fs::path& folder, std::ostream* out) {
   if (out) {
     if (status == 0)
       *out << "map: " << map.string()
-           << (figures ? "; figures: campaign_points.png, mu_vs_stress.png, maps*.png, "
-                         "correlations.png, correlations.csv"
+           << (figures ? "; figures: campaign_points.png, mu_vs_stress.png, "
+                         "bulk_share_vs_cohesion.png, maps*.png, correlations.png, "
+                         "correlations.csv"
                        : "")
            << "\n";
     else

@@ -74,8 +74,11 @@ bool python_has_matplotlib(const fs::path& python) {
   return run_program({python.string(), "-c", "import matplotlib, numpy"}, true) == 0;
 }
 
-int run_plot_script(const fs::path& script, const fs::path& run_dir, const fs::path& python) {
-  return run_program({python.string(), script.string(), run_dir.string()}, false);
+int run_plot_script(const fs::path& script, const fs::path& run_dir,
+                    const std::vector<std::string>& arguments, const fs::path& python) {
+  std::vector<std::string> argv = {python.string(), script.string(), run_dir.string()};
+  argv.insert(argv.end(), arguments.begin(), arguments.end());
+  return run_program(argv, false);
 }
 
 }  // namespace sg

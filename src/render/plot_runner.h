@@ -12,6 +12,7 @@
 // python3 first on PATH may be another installation without them).
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace sg {
@@ -28,9 +29,10 @@ std::optional<std::filesystem::path> find_plot_script(const std::filesystem::pat
 // True if `python` exists and imports matplotlib and numpy (output silenced).
 bool python_has_matplotlib(const std::filesystem::path& python = kPlotPython);
 
-// Runs `python script run_dir`, its output going to ours; returns its exit status (127 if
-// it could not be started, 128 + signal if killed).
+// Runs `python script run_dir arguments...`, its output going to ours; returns its exit
+// status (127 if it could not be started, 128 + signal if killed).
 int run_plot_script(const std::filesystem::path& script, const std::filesystem::path& run_dir,
+                    const std::vector<std::string>& arguments = {},
                     const std::filesystem::path& python = kPlotPython);
 
 }  // namespace sg

@@ -1,0 +1,74 @@
+#include "render/composite_snapshots.h"
+
+#include <cmath>
+#include <exception>
+
+#include "render/run_folder.h"
+#include "render/snapshot_renderer.h"
+
+namespace sg {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Each snapshot fills one of the composite's three rows on its left (about 9 x 2.4 inches at
+// 110 dpi, scripts/plot_run.py): wide and low like the layer.
+constexpr int kSnapshotWidth = 1200, kSnapshotHeight = 300;
+
+RenderOptions snapshot_options(const RunInfo& run, const std::string& field) {
+  RenderOptions o;
+  o.field = field;
+  o.width = kSnapshotWidth;
+  o.height = kSnapshotHeight;
+  o.last_frame_only = true;
+  o.movie = false;
+  o.periodic = run.periodic;
+  o.title = run.name;
+  const double velocity = run.parameters.velocity;
+  // As the run normalized the strain rate (io/vtk_writer.h global_strain_rate).
+  o.strain_rate_unit =
+      run.shear_cell && std::isfinite(run.parameters.gap) && velocity > 0.0 ? "V/D" : "1/time";
+  if (field == "velocity_x" && std::isfinite(velocity) && velocity > 0.0)
+    o.range = std::make_pair(-0.5 * velocity, 0.5 * velocity);  // the first bodies move at +-V/2
+  else
+    o.robust_range = true;
+  return o;
+}
+
+}  // namespace
+
+const std::vector<std::string>& composite_fields() {
+  static const std::vector<std::string> fields = {"velocity_x", "strain_rate", "von_mises"};
+  return fields;
+}
+
+CompositeSnapshots render_composite_snapshots(const fs::path& run_dir) {
+  CompositeSnapshots out;
+  if (!fs::exists(run_dir / "fields.pvd")) {
+    out.notes.push_back("no field snapshot: the run wrote no fields.pvd");
+    return out;
+  }
+  const RunInfo run = read_run_info(run_dir);
+  if (!run.has_scenario) {
+    out.notes.push_back("no snapshot: " + run.note);
+    return out;
+  }
+  if (!run.shear_cell) {
+    out.notes.push_back("no snapshot: not a shear cell (the composite is the shear cell's)");
+    return out;
+  }
+  for (const std::string& field : composite_fields()) {
+    try {
+      const RenderResult r = render_run(run_dir, snapshot_options(run, field));
+      if (r.images.empty())
+        out.notes.push_back("no " + field + " snapshot: nothing drawn");
+      else
+        out.pictures.emplace_back(field, r.images.back());
+    } catch (const std::exception& e) {  // sg::Error, or a file system error: said, not fatal
+      out.notes.push_back("no " + field + " snapshot: " + e.what());
+    }
+  }
+  return out;
+}
+
+}  // namespace sg
