@@ -28,10 +28,12 @@ RenderOptions snapshot_options(const RunInfo& run, const std::string& field) {
   // As the run normalized the strain rate (io/vtk_writer.h global_strain_rate).
   o.strain_rate_unit =
       run.shear_cell && std::isfinite(run.parameters.gap) && velocity > 0.0 ? "V/D" : "1/time";
-  if (field == "velocity_x" && std::isfinite(velocity) && velocity > 0.0)
-    o.range = std::make_pair(-0.5 * velocity, 0.5 * velocity);  // the first bodies move at +-V/2
-  else
-    o.robust_range = true;
+  // velocity_x over +-V/2, the first bodies' velocities (render/colour_range.h); the strain
+  // rate on a log scale, three decades below its 99th percentile (linear, the shear bands
+  // leave the grains' interiors one colour); the stress over its 1st-99th percentiles.
+  if (std::isfinite(velocity) && velocity > 0.0) o.shear_velocity = velocity;
+  o.robust_range = !(field == "velocity_x" && o.shear_velocity);  // robust overrides +-V/2
+  o.log_scale = field == "strain_rate";
   return o;
 }
 
