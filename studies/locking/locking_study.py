@@ -406,7 +406,7 @@ def print_markdown(rows):
     """The table of docs/verification.md: per nu and spacing, the force at each stage and its
     error against the reference, 3 and 6 Gauss points side by side."""
     base = [r for r in rows if r["rate"] == 1.0]
-    head = "| nu | D/h |"
+    head = "| ν | D/h |"
     rule = "|---|---|"
     for stage in STAGES:
         pct = round(100 * stage)
@@ -430,6 +430,7 @@ def print_markdown(rows):
                     found = True
                     ref = r["reference_D_over_h"] == n
                     error = float(r[f"error_{pct}_percent"])
+                    error = 0.0 if abs(error) < 0.05 else error  # no "-0.0%"
                     line += (f" {float(r[f'force_{pct}']):.4f} (reference) |" if ref else
                              f" {float(r[f'force_{pct}']):.4f} ({error:+.1f}%) |")
             if found:
