@@ -15,11 +15,12 @@ finer ones for the reference) x 3 and 6 Gauss points per triangle.
     /usr/bin/python3 studies/locking/locking_study.py scenario # rewrite the test's scenario
 
 Options: --bin (default build/app/softgrain), --runs (the folder of runs this script owns,
-default out-locking/), --only SUBSTRING (cases whose name contains it), --rate-check (also the
-case run at half the loading rate). A case whose series.csv exists is not run again. Every run
-is single-threaded (--threads 1), one at a time. Writes studies/locking/results.csv (one row
-per run, the errors against the reference of its nu and rule) and studies/locking/locking.png.
-Needs numpy and matplotlib (Debian: python3-numpy, python3-matplotlib).
+default out/locking-study/, which git ignores), --only SUBSTRING (cases whose name contains
+it), --rate-check (also the case run at half the loading rate). A case whose series.csv exists
+is not run again. Every run is single-threaded (--threads 1), one at a time. Writes
+studies/locking/results.csv (one row per run, the errors against the reference of its nu and
+rule) and studies/locking/locking.png. Needs numpy and matplotlib (Debian: python3-numpy,
+python3-matplotlib).
 
 Why the choices (docs/verification.md "Locking at large strain" gives the numbers):
 - quasi-static: each stage is a triangular velocity pulse of the plates over LOAD_TIME, then a
@@ -441,7 +442,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("action", choices=("run", "table", "markdown", "scenario"))
     parser.add_argument("--bin", default=os.path.join(ROOT, "build", "app", "softgrain"))
-    parser.add_argument("--runs", default=os.path.join(os.getcwd(), "out-locking"))
+    parser.add_argument("--runs", default=os.path.join(ROOT, "out", "locking-study"))
     parser.add_argument("--only", default=None)
     parser.add_argument("--rate-check", action="store_true")
     args = parser.parse_args()
