@@ -12,18 +12,18 @@ void add_viscous_tractions(const ContactLawParams& params, const ContactKinemati
   // The rates need the previous gap (an active contact's history) and a step; the
   // coefficients a mass and a length.
   double viscous_normal = 0.0, viscous_tangential = 0.0;
-  if (before.active && history.active && kin.time_step > 0.0 && kin.effective_mass > 0.0 &&
+  if (before.active && history.active && kin.interval > 0.0 && kin.effective_mass > 0.0 &&
       kin.initial_length > 0.0) {
     // c = 2 zeta sqrt(m_eff k / L0) per unit length: critical damping of a mass m_eff on a
     // spring k L0, divided by L0.
     const double mass_per_length = kin.effective_mass / kin.initial_length;
-    const double normal_rate = (kin.normal_gap - before.normal_gap) / kin.time_step;
+    const double normal_rate = (kin.normal_gap - before.normal_gap) / kin.interval;
     viscous_normal = -2.0 * params.damping_ratio *
                      std::sqrt(mass_per_length * params.normal_stiffness) * normal_rate;
     if (!out.slipping)
       viscous_tangential = -2.0 * params.damping_ratio *
                            std::sqrt(mass_per_length * params.tangential_stiffness) *
-                           (kin.slip_increment / kin.time_step);
+                           (kin.slip_increment / kin.interval);
   }
   // Trapezoidal work of the viscous tractions over the increment (contact_law.h).
   if (before.active)

@@ -214,7 +214,7 @@ static_assert(sizeof(ContactHistory) == 72);
 struct ContactKinematics {
   double normal_gap = 0.0;        // g_n now [length]
   double slip_increment = 0.0;    // ds since the previous evaluation [length]
-  double time_step = 0.0;         // time since the previous evaluation (0: no damping)
+  double interval = 0.0;          // time since the previous evaluation (0: no damping)
   double effective_mass = 0.0;    // m_eff of the two bodies (0: no damping)
   double initial_length = 0.0;    // L0, initial tributary length of the slave point
   bool first_evaluation = false;  // the run's first: bonded / cohesive_zone bonds form here

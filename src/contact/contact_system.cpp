@@ -310,7 +310,7 @@ void ContactSystem::evaluate_group(const Model& model, std::span<const ContactCa
   ContactKinematics kin;
   kin.normal_gap = proj.gap;
   kin.slip_increment = h.active ? ds : 0.0;
-  kin.time_step = evaluation.previous_step;
+  kin.interval = evaluation.previous_step;
   kin.effective_mass = law.damping_ratio > 0.0 ? effective_mass(slave_body, master) : 0.0;
   kin.initial_length = initial_tributary_[static_cast<std::size_t>(slave)];
   kin.first_evaluation = evaluation.first;

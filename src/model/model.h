@@ -223,6 +223,10 @@ struct Model {
     return materials[static_cast<std::size_t>(id)];
   }
   const MaterialParams& material_of(BodyId id) const { return material(body(id).material); }
+  // The material as the scenario defined it (its name, its constants as written).
+  const MaterialDef& material_def(MaterialId id) const {
+    return material_defs[static_cast<std::size_t>(id)];
+  }
   // The one definition of a damped body: a deformable body whose material has bulk
   // (Kelvin-Voigt) damping, alpha > 0, whatever its damping model (material.h DampingModel).
   // Rigid bodies carry no viscous force. Whether the integrator treats that viscosity

@@ -46,7 +46,7 @@ Impact impact(const ContactLawParams& law) {
   for (int step = 0; step < 1000000; ++step) {
     ContactKinematics kin;
     kin.normal_gap = gap;
-    kin.time_step = dt;
+    kin.interval = dt;
     kin.effective_mass = kMass;
     kin.initial_length = kLength;
     const ContactTraction t = evaluate_contact_law(law, kin, history);
@@ -125,7 +125,7 @@ TEST(ContactDamping, StuckTangentialOscillationDecaysAtTheDampingRatio) {
     ContactKinematics kin;
     kin.normal_gap = -0.01;
     kin.slip_increment = offset - previous_offset;
-    kin.time_step = dt;
+    kin.interval = dt;
     kin.effective_mass = kMass;
     kin.initial_length = kLength;
     previous_offset = offset;

@@ -245,14 +245,14 @@ TEST(Servo, ShearCellMixesDiscsAndEllipsesByNumberFraction) {
     }
     if (b.kind == BodyKind::rigid) {
       ++discs;
-      EXPECT_EQ(model.material_defs[static_cast<std::size_t>(b.material)].name, "fb");
+      EXPECT_EQ(model.material_def(b.material).name, "fb");
       EXPECT_GE(2.0 * shortest, 0.3 - 1e-9);
       EXPECT_LE(2.0 * longest, 0.5 + 1e-9);
       EXPECT_LT(longest / shortest, 1.0 + 1e-3);  // round (the centroid of the polygon is
                                                   // not exactly the circle centre)
     } else {
       ++ellipses;
-      EXPECT_EQ(model.material_defs[static_cast<std::size_t>(b.material)].name, "soft");
+      EXPECT_EQ(model.material_def(b.material).name, "soft");
       EXPECT_GE(2.0 * shortest, 0.6 - 1e-9);
       EXPECT_LE(2.0 * longest, 2.0 + 1e-9);
       // An inscribed polygon of an ellipse with axes in the ranges: pi/4 a b, a bit less.
