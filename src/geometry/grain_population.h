@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geometry/fourier_shape.h"
+#include "geometry/node_spacing.h"
 #include "geometry/polygon.h"
 #include "geometry/size_distribution.h"
 
@@ -40,6 +41,9 @@ struct GrainComponentDef {
   double number_fraction = 1.0;  // relative weight; fractions are normalized over the mixture
   bool rigid = false;            // rigid (3 DOFs) or deformable (meshfree)
   std::string material = "default";
+  // Its own node spacings (issue #32; 0: the builder's): the builder samples the contour at
+  // spacing.contour and meshes the grain graded to spacing.interior.
+  NodeSpacing spacing;
 };
 
 struct MixtureDef {

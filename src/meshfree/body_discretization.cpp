@@ -6,6 +6,14 @@
 
 namespace sg {
 
+DiscretizationParams with_spacing(DiscretizationParams params, const NodeSpacing& own) {
+  if (own.contour > 0.0) {
+    params.mesh.spacing = own.contour;
+    params.mesh.interior_spacing = own.interior;
+  }
+  return params;
+}
+
 BodyDiscretization discretize_mesh(DomainMesh mesh, const DiscretizationParams& params,
                                    const std::string& body_name) {
   BodyDiscretization d;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/node_spacing.h"
 #include "meshfree/domain_mesh.h"
 #include "meshfree/mls.h"
 #include "meshfree/shape_rows.h"
@@ -35,6 +36,11 @@ struct BodyDiscretization {
   // Partition of unity makes the total exact: sum_I lumped_volume_I = area.
   std::vector<double> lumped_volume;
 };
+
+// `params` with a body's own node spacings (geometry/node_spacing.h): own.contour, when set,
+// replaces the spacing and own.interior the interior spacing (0: uniform at own.contour);
+// own.contour unset keeps params' spacings.
+DiscretizationParams with_spacing(DiscretizationParams params, const NodeSpacing& own);
 
 // Meshes the domain bounded by `boundary` (CCW, sampled at about the node spacing) and
 // discretizes it.

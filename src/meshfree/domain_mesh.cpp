@@ -7,10 +7,13 @@
 //      circumcentres of triangles that are too large or too flat, and splits constrained
 //      edges they would encroach. The size bound is set from the contour edges so that a
 //      contour sampled at about h is kept as it is (CGAL User Manual, "2D Conforming
-//      Triangulations and Meshes", §Meshes: criteria);
+//      Triangulations and Meshes", §Meshes: criteria). Graded meshes (boundary_grading,
+//      interior_spacing) bound the size by a sizing field instead, a function of the distance
+//      to the contour (SizingField);
 //   3. Lloyd smoothing moves every interior node to the centroid of its Voronoi cell, which
 //      evens out the spacing the refinement left; our own loop, not lloyd_optimize_mesh_2,
-//      for determinism (see lloyd_step);
+//      for determinism (see lloyd_step). A graded mesh takes the centroid under the density
+//      (h_contour / h_local)^4, so that smoothing keeps the grading instead of evening it out;
 //   4. the output is read back in a canonical order: boundary by walking the domain boundary
 //      counter-clockwise from boundary[0], interior sorted by position, triangles sorted.
 //
@@ -54,11 +57,6 @@ constexpr double kSizeBoundFactor = 1.5;
 // Contour edges up to this multiple of h still set the size bound; longer edges are split by
 // the mesher (their midpoints become boundary nodes) instead of coarsening the whole body.
 constexpr double kLongestContourEdgeKept = 1.5;
-// Graded spacing grows by this much per unit distance from the contour (a gradation below 1
-// keeps neighbouring triangles of similar size, hence well shaped), starting one spacing
-// inside so that the first layer of triangles, which carries the contact nodes' MLS
-// neighbourhoods, stays as fine as in a uniform mesh.
-constexpr double kGradingSlope = 0.5;
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 // The vertex info is our node index, set once meshing is done.
@@ -124,32 +122,61 @@ class CappedContourDistance {
   std::vector<std::vector<int>> cells_;  // contour edge indices per cell, row-major
 };
 
-// Delaunay_mesh_size_criteria_2 with a size bound that may grow away from the contour:
-// local bound = min(grading * s, s + slope * max(0, distance to contour - h)), s the bound at
-// the contour.
-// Same quality measure as CGAL's (squared sine of the smallest angle, longest edge over the
-// bound), so CGAL's queue ordering and termination argument are unchanged.
+// The size bound of a triangle at distance d from the contour (its centroid's):
+//   bound(d) = min(ratio * s, s + slope * max(0, d - ramp_start)),
+// s the bound at the contour. boundary_grading: ratio = grading, slope kMaxGradingSlope,
+// ramp_start h (the first layer of triangles, which carries the contact nodes' MLS
+// neighbourhoods, stays as fine as in a uniform mesh); interior_spacing: ratio = interior / h,
+// ramp_start 0 and the slope that reaches ratio * s at the body's depth, at most
+// kMaxGradingSlope (issue #32: the spacing linear from contour to centre, as the mesh ratios
+// of the reference code's preprocessor). Uniform: no distance.
+class SizingField {
+ public:
+  explicit SizingField(double size_bound) : size_bound_(size_bound) {}
+  SizingField(double size_bound, double ratio, double ramp_start, double slope,
+              const CappedContourDistance* distance)
+      : size_bound_(size_bound),
+        ratio_(ratio),
+        ramp_start_(ramp_start),
+        slope_(slope),
+        distance_(distance) {}
+
+  bool graded() const { return distance_ != nullptr; }
+  double contour_bound() const { return size_bound_; }
+  // The distance beyond which the bound stops growing (the distance cap it needs).
+  double full_growth_distance() const {
+    return ramp_start_ + (ratio_ - 1.0) * size_bound_ / slope_;
+  }
+  double operator()(const Vec2& p) const {
+    if (!distance_) return size_bound_;
+    const double d = (*distance_)(p);
+    return std::min(ratio_ * size_bound_, size_bound_ + slope_ * std::max(0.0, d - ramp_start_));
+  }
+
+ private:
+  double size_bound_;
+  double ratio_ = 1.0;
+  double ramp_start_ = 0.0;
+  double slope_ = kMaxGradingSlope;
+  const CappedContourDistance* distance_ = nullptr;  // null: uniform
+};
+
+// Delaunay_mesh_size_criteria_2 with the size bound of a SizingField at the triangle's
+// centroid. Same quality measure as CGAL's (squared sine of the smallest angle, longest edge
+// over the bound), so CGAL's queue ordering and termination argument are unchanged.
 class GradedSizeCriteria : public CGAL::Delaunay_mesh_size_criteria_2<Cdt> {
  public:
   using Uniform = CGAL::Delaunay_mesh_size_criteria_2<Cdt>;
 
-  GradedSizeCriteria(double size_bound, double grading, double ramp_start,
-                     const CappedContourDistance* distance)
+  explicit GradedSizeCriteria(const SizingField* sizing)
       : CGAL::Delaunay_mesh_criteria_2<Cdt>(kShapeBound),
-        Uniform(kShapeBound, size_bound),
-        grading_(grading),
-        ramp_start_(ramp_start),
-        distance_(distance) {}
+        Uniform(kShapeBound, sizing->contour_bound()),
+        sizing_(sizing) {}
 
   class Is_bad : public Uniform::Is_bad {
    public:
-    Is_bad(const Uniform::Is_bad& uniform, double size_bound, double grading, double ramp_start,
-           const CappedContourDistance* distance)
-        : Uniform::Is_bad(uniform),
-          size_bound_(size_bound),
-          grading_(grading),
-          ramp_start_(ramp_start),
-          distance_(distance) {}
+    Is_bad(const Uniform::Is_bad& uniform, const SizingField* sizing)
+        : Uniform::Is_bad(uniform), sizing_(sizing) {}
 
     using Uniform::Is_bad::operator();
 
@@ -157,12 +184,7 @@ class GradedSizeCriteria : public CGAL::Delaunay_mesh_size_criteria_2<Cdt> {
       const Vec2 a(face->vertex(0)->point().x(), face->vertex(0)->point().y());
       const Vec2 b(face->vertex(1)->point().x(), face->vertex(1)->point().y());
       const Vec2 c(face->vertex(2)->point().x(), face->vertex(2)->point().y());
-      double local_bound = size_bound_;
-      if (grading_ > 1.0) {
-        const double d = (*distance_)((a + b + c) / 3.0);
-        local_bound = std::min(grading_ * size_bound_,
-                               size_bound_ + kGradingSlope * std::max(0.0, d - ramp_start_));
-      }
+      const double local_bound = (*sizing_)((a + b + c) / 3.0);
       std::array<double, 3> squared_edge = {(b - c).squaredNorm(), (c - a).squaredNorm(),
                                             (a - b).squaredNorm()};
       std::sort(squared_edge.begin(), squared_edge.end());
@@ -178,20 +200,13 @@ class GradedSizeCriteria : public CGAL::Delaunay_mesh_size_criteria_2<Cdt> {
     }
 
    private:
-    double size_bound_;
-    double grading_;
-    double ramp_start_;
-    const CappedContourDistance* distance_;
+    const SizingField* sizing_;
   };
 
-  Is_bad is_bad_object() const {
-    return Is_bad(Uniform::is_bad_object(), size_bound(), grading_, ramp_start_, distance_);
-  }
+  Is_bad is_bad_object() const { return Is_bad(Uniform::is_bad_object(), sizing_); }
 
  private:
-  double grading_;
-  double ramp_start_;                      // distance from the contour where the size grows
-  const CappedContourDistance* distance_;  // null when grading == 1
+  const SizingField* sizing_;
 };
 
 using Mesher = CGAL::Delaunay_mesher_2<Cdt, GradedSizeCriteria>;
@@ -214,6 +229,14 @@ void verify_input(const Polygon& boundary, const DomainMeshParams& params,
   SG_VERIFY(std::isfinite(params.boundary_grading) && params.boundary_grading >= 1.0,
             "body '" << body_name << "': boundary grading " << params.boundary_grading
                      << " must be >= 1 (1 = uniform spacing)");
+  const double interior = params.interior_spacing;
+  SG_VERIFY(std::isfinite(interior) && (interior == 0.0 || interior >= h),
+            "body '" << body_name << "': interior spacing " << interior
+                     << " must be 0 (uniform) or at least the contour spacing h=" << h
+                     << " (a graded mesh coarsens inwards)");
+  SG_VERIFY(!(interior > h && params.boundary_grading > 1.0),
+            "body '" << body_name << "': interior spacing " << interior << " and boundary grading "
+                     << params.boundary_grading << " both grade the mesh; give one");
   for (std::size_t i = 0; i < boundary.size(); ++i) {
     const double edge = (boundary[(i + 1) % boundary.size()] - boundary[i]).norm();
     SG_VERIFY(edge > 1e-9 * h, "body '" << body_name << "': contour points " << i << " and "
@@ -292,8 +315,39 @@ std::vector<Vec2> clip_left_of(const std::vector<Vec2>& polygon, const Vec2& a, 
 // in a std::set ordered by address, so the order of its floating-point updates, hence the
 // last bits of the nodes, changed from one call to the next (measured: two calls on the
 // same ellipse gave 477 of 692 nodes different after 10 iterations).
+// A graded mesh (sizing given) takes the centroid under the density rho = (s / s_local)^4
+// instead, over a fan of triangles from the cell's first corner, each weighted by rho at its
+// centroid: a centroidal Voronoi tessellation under rho has cells of diameter ~ rho^(-1/4) in
+// two dimensions (Gersho's conjecture, in Du, Faber & Gunzburger 1999), so the smoothed spacing
+// follows s_local.
+Vec2 cell_centroid(const std::vector<Vec2>& cell, const SizingField* sizing, double& weight) {
+  double twice_area = 0.0;
+  Vec2 moment = Vec2::Zero();
+  if (!sizing) {
+    // Centroid of a polygon from its signed-area decomposition.
+    for (std::size_t k = 0; k < cell.size(); ++k) {
+      const Vec2& p = cell[k];
+      const Vec2& q = cell[(k + 1) % cell.size()];
+      const double w = cross(p, q);
+      twice_area += w;
+      moment += w * (p + q);
+    }
+    weight = twice_area;
+    return moment / (3.0 * twice_area);
+  }
+  for (std::size_t k = 1; k + 1 < cell.size(); ++k) {
+    const Vec2 c = (cell[0] + cell[k] + cell[k + 1]) / 3.0;
+    const double ratio = sizing->contour_bound() / (*sizing)(c);
+    const double w = cross(cell[k] - cell[0], cell[k + 1] - cell[0]) * std::pow(ratio, 4);
+    twice_area += w;
+    moment += w * c;
+  }
+  weight = twice_area;
+  return moment / twice_area;
+}
+
 void lloyd_step(const Cdt& cdt, std::vector<Vec2>& nodes, int boundary_count,
-                const Polygon& contour) {
+                const Polygon& contour, const SizingField* sizing) {
   std::vector<Vec2> target = nodes;
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
     if (v->info() < boundary_count) continue;
@@ -312,18 +366,10 @@ void lloyd_step(const Cdt& cdt, std::vector<Vec2>& nodes, int boundary_count,
     } while (++f != first);
     for (const auto& [a, b] : contour_edges)
       cell = clip_left_of(cell, a, b);
-    // Centroid of a polygon from its signed-area decomposition.
-    double twice_area = 0.0;
-    Vec2 moment = Vec2::Zero();
-    for (std::size_t k = 0; k < cell.size(); ++k) {
-      const Vec2& p = cell[k];
-      const Vec2& q = cell[(k + 1) % cell.size()];
-      const double w = cross(p, q);
-      twice_area += w;
-      moment += w * (p + q);
-    }
-    if (!(twice_area > 0.0)) continue;
-    const Vec2 centroid = moment / (3.0 * twice_area);
+    if (cell.size() < 3) continue;
+    double weight = 0.0;
+    const Vec2 centroid = cell_centroid(cell, sizing, weight);
+    if (!(weight > 0.0)) continue;
     // A cell reaching past a contour edge outside the star (deep concave notch) could pull
     // a node out of the body: such a node stays where it is for this iteration.
     if (contains(contour, centroid)) target[static_cast<std::size_t>(v->info())] = centroid;
@@ -345,6 +391,55 @@ void sort_interior(std::vector<Vec2>& nodes, int boundary_count) {
     return a[major] != b[major] ? a[major] < b[major] : a[minor] < b[minor];
   });
 }
+// Depth of a body: the largest distance from an inside point to its contour, the radius of
+// its largest inscribed circle. That circle's centre lies near a vertex of the Voronoi diagram
+// of the contour points, i.e. a circumcentre of their Delaunay triangles. A circumcircle passes
+// through three contour points, so its radius bounds the distance from its centre to the
+// contour from above: the candidates are visited by decreasing radius and the exact distance
+// kept, until no radius left can beat it.
+double body_depth(const Polygon& contour, const std::string& body_name) {
+  const Cdt cdt = triangulate(contour, static_cast<int>(contour.size()), body_name);
+  std::vector<std::pair<double, Vec2>> candidates;  // circumradius, circumcentre
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
+    if (!f->is_in_domain()) continue;
+    const Vec2 centre = to_vec(cdt.circumcenter(f));
+    candidates.emplace_back((centre - to_vec(f->vertex(0)->point())).norm(), centre);
+  }
+  std::sort(candidates.begin(), candidates.end(),
+            [](const auto& a, const auto& b) { return a.first > b.first; });
+  double depth = 0.0;
+  for (const auto& [radius, centre] : candidates) {
+    if (radius <= depth) break;
+    if (!contains(contour, centre)) continue;
+    double d = radius;
+    for (std::size_t i = 0; i < contour.size(); ++i)
+      d = std::min(
+          d, project_on_segment(centre, contour[i], contour[(i + 1) % contour.size()]).distance);
+    depth = std::max(depth, d);
+  }
+  return depth;
+}
+
+// The sizing field of `params` (SizingField). `distance` receives the contour distance the
+// field points to (empty for a uniform mesh).
+SizingField sizing_field(const Polygon& boundary, const DomainMeshParams& params, double size_bound,
+                         double longest_edge, std::optional<CappedContourDistance>& distance,
+                         const std::string& body_name) {
+  const double h = params.spacing;
+  if (params.boundary_grading > 1.0) {
+    const SizingField shape(size_bound, params.boundary_grading, h, kMaxGradingSlope, nullptr);
+    distance.emplace(boundary, shape.full_growth_distance(), longest_edge);
+    return SizingField(size_bound, params.boundary_grading, h, kMaxGradingSlope, &*distance);
+  }
+  if (!(params.interior_spacing > h)) return SizingField(size_bound);
+  const double ratio = params.interior_spacing / h;
+  const double depth = std::max(body_depth(boundary, body_name), h);
+  const double slope = std::min(kMaxGradingSlope, (ratio - 1.0) * size_bound / depth);
+  const SizingField shape(size_bound, ratio, 0.0, slope, nullptr);
+  distance.emplace(boundary, shape.full_growth_distance(), longest_edge);
+  return SizingField(size_bound, ratio, 0.0, slope, &*distance);
+}
+
 }  // namespace
 
 DomainMesh mesh_domain(const Polygon& boundary, const DomainMeshParams& params,
@@ -370,13 +465,12 @@ DomainMesh mesh_domain(const Polygon& boundary, const DomainMeshParams& params,
   // Size bound from the contour spacing actually given (capped, see kLongestContourEdgeKept).
   const double contour_spacing = std::clamp(longest_edge, h, kLongestContourEdgeKept * h);
   const double size_bound = kSizeBoundFactor * contour_spacing;
-  const double grading = params.boundary_grading;
   std::optional<CappedContourDistance> distance;
-  if (grading > 1.0)
-    distance.emplace(boundary, h + (grading - 1.0) * size_bound / kGradingSlope, longest_edge);
+  const SizingField field =
+      sizing_field(boundary, params, size_bound, longest_edge, distance, body_name);
   // Without seeds, the mesher's domain is every face not connected to the infinite face
   // without crossing a constraint: the inside of the contour.
-  Mesher mesher(cdt, GradedSizeCriteria(size_bound, grading, h, distance ? &*distance : nullptr));
+  Mesher mesher(cdt, GradedSizeCriteria(&field));
   mesher.refine_mesh();
 
   // Temporary ids in CGAL's vertex order.
@@ -431,7 +525,7 @@ DomainMesh mesh_domain(const Polygon& boundary, const DomainMeshParams& params,
   const Polygon domain(mesh.nodes.begin(), mesh.nodes.begin() + mesh.boundary_count);
   for (int iteration = 0; iteration < params.smoothing_iterations; ++iteration)
     lloyd_step(triangulate(mesh.nodes, mesh.boundary_count, body_name), mesh.nodes,
-               mesh.boundary_count, domain);
+               mesh.boundary_count, domain, field.graded() ? &field : nullptr);
   if (params.smoothing_iterations > 0) sort_interior(mesh.nodes, mesh.boundary_count);
 
   // Triangles of the final nodes. CGAL faces are counter-clockwise; rotating a triple keeps

@@ -22,7 +22,17 @@ struct DomainMeshParams {
   // The spacing grows by at most half the distance travelled away from the contour, so the
   // mesh stays well shaped.
   double boundary_grading = 1.0;
+  // > spacing: a graded mesh (issue #32): the target spacing grows linearly with the distance
+  // from the contour, from `spacing` on the contour to `interior_spacing` at the body's deepest
+  // point (the centre of its largest inscribed circle: radially for a disc), by at most
+  // kMaxGradingSlope spacing per unit length (a thin body may not reach it); Lloyd smoothing
+  // then keeps that density. 0 (or <= spacing): uniform. Not together with boundary_grading.
+  double interior_spacing = 0.0;
 };
+
+// Steepest growth of a graded spacing, per unit length travelled inwards: neighbouring
+// triangles then differ in size by less than half, so they stay well shaped.
+inline constexpr double kMaxGradingSlope = 0.5;
 
 struct DomainMesh {
   // [0, boundary_count): contour nodes, counter-clockwise, nodes[0] == boundary[0];
@@ -43,7 +53,8 @@ struct DomainMesh {
 // Throws sg::Error naming `body_name` for a contour with fewer than 3 points, a clockwise or
 // self-intersecting contour, coincident consecutive points, non-finite coordinates, a
 // non-positive spacing, a spacing too large or too small for the body (below its equivalent
-// diameter / kMaxDiameterPerSpacing), negative smoothing iterations or a grading below 1.
+// diameter / kMaxDiameterPerSpacing), negative smoothing iterations, a grading below 1, an
+// interior spacing that is negative, not finite or below the spacing, or both gradings.
 // The finest node spacing accepted for a body of equivalent diameter D is D / this: about
 // 3 million nodes in a disc.
 inline constexpr double kMaxDiameterPerSpacing = 2000.0;

@@ -34,7 +34,7 @@ double typical_spacing(std::span<const Vec2> nodes) {
 }  // namespace
 
 MlsShapeFunctions::MlsShapeFunctions(std::span<const Vec2> nodes, const MlsParams& params,
-                                     std::string body_name)
+                                     std::string body_name, std::span<const double> min_support)
     : nodes_(nodes.begin(), nodes.end()),
       params_(params),
       body_name_(std::move(body_name)),
@@ -48,11 +48,14 @@ MlsShapeFunctions::MlsShapeFunctions(std::span<const Vec2> nodes, const MlsParam
   SG_VERIFY(nodes_.size() > static_cast<std::size_t>(params.neighbours),
             "body '" << body_name_ << "' has " << nodes_.size() << " nodes, fewer than the "
                      << params.neighbours + 1 << " an MLS support needs (neighbours + 1)");
+  SG_ASSERT(min_support.empty() || min_support.size() == nodes_.size(),
+            "min_support has " << min_support.size() << " radii for " << nodes_.size() << " nodes");
   support_radius_.resize(nodes_.size());
   double sum = 0.0;
   for (std::size_t i = 0; i < nodes_.size(); ++i) {
     support_radius_[i] = params.support_factor *
                          grid_.kth_neighbour_distance(static_cast<int>(i), params.neighbours);
+    if (!min_support.empty()) support_radius_[i] = std::max(support_radius_[i], min_support[i]);
     max_support_ = std::max(max_support_, support_radius_[i]);
     sum += support_radius_[i];
   }

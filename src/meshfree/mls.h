@@ -46,7 +46,11 @@ double cubic_spline_weight_derivative(double r);
 class MlsShapeFunctions {
  public:
   // `nodes`: reference positions of the body's field nodes. `body_name` goes into errors.
-  MlsShapeFunctions(std::span<const Vec2> nodes, const MlsParams& params, std::string body_name);
+  // `min_support` (empty, or one radius per node): a floor under each node's support radius,
+  // for node sets whose k nearest neighbours may all lie on one line (the rows of a strip
+  // graded in depth, meshfree/periodic_strip.h); empty leaves the k-th neighbour rule alone.
+  MlsShapeFunctions(std::span<const Vec2> nodes, const MlsParams& params, std::string body_name,
+                    std::span<const double> min_support = {});
 
   // Appends to `rows` one row: the nodes whose support covers `point`, with N, dN/dX, dN/dY.
   // Throws sg::Error naming the body and the point if fewer than 3 nodes cover it or the

@@ -114,15 +114,56 @@ void check_strip_input(const Polygon& surface, double closing_shift_x, double ba
                                     << " in x, not less than the period " << period);
 }
 
+// Depths below the surface (0 at the surface, `height` at the back face) of a column's nodes,
+// from the back face up, graded (issue #32): the spacing grows linearly with depth z from h at
+// the surface to `interior` at the back face, s(z) = h + a z with a = (interior - h) / height.
+// In the stretched coordinate xi(z) = integral dz / s = ln(1 + a z / h) / a the nodes are
+// equally spaced, xi_k = k xi(height) / n with n = ceil(xi(height)) intervals (each at most
+// about s(z) long), so z_k = h (exp(a xi_k) - 1) / a. The same law for every column (each
+// with its own height), so that neighbouring columns' nodes still zip into triangles.
+std::vector<double> graded_depths(double height, double h, double interior) {
+  const double a = (interior - h) / height;
+  const double stretched = std::log1p(a * height / h) / a;
+  const int intervals = std::max(1, static_cast<int>(std::ceil(stretched - 1e-9)));
+  std::vector<double> depth(static_cast<std::size_t>(intervals) + 1);
+  for (int i = 0; i <= intervals; ++i) {
+    const double xi = stretched * static_cast<double>(intervals - i) / intervals;
+    depth[static_cast<std::size_t>(i)] = h * std::expm1(a * xi) / a;
+  }
+  depth.front() = height;  // exactly on the back face
+  return depth;
+}
+
 // The strip's nodes: the surface points, then per column the nodes below (or above) them down
-// to the back face, at most h apart.
+// to the back face, at most h apart (graded: see graded_depths).
 struct StripColumns {
   std::vector<Column> columns;
   std::vector<Vec2> nodes;
   std::vector<int> node_column;
   std::vector<int> back_nodes;
+  // Per node: the longer of the two intervals of its column on either side of it.
+  std::vector<double> column_interval;
 };
-StripColumns build_columns(const Polygon& surface, double back_y, double h, bool material_below) {
+
+// Graded strips: each node's MLS support reaches at least 1.5 times its column interval. Deep
+// in a graded strip the rows are further apart (up to interior_spacing) than the columns (the
+// surface spacing), so a node's k = 8 nearest neighbours may all lie in its own row, with the
+// next row's node exactly on the support's edge (weight 0): the moment matrix at a back-face
+// point was singular (measured: reciprocal condition 0 with 7 covering nodes, 0.05 / 0.2).
+constexpr double kGradedStripSupportPerInterval = 1.5;
+void set_column_intervals(StripColumns& built) {
+  built.column_interval.assign(built.nodes.size(), 0.0);
+  for (const Column& column : built.columns)
+    for (std::size_t i = 0; i + 1 < column.nodes.size(); ++i) {
+      const auto a = static_cast<std::size_t>(column.nodes[i]);
+      const auto b = static_cast<std::size_t>(column.nodes[i + 1]);
+      const double interval = std::abs(built.nodes[b].y() - built.nodes[a].y());
+      built.column_interval[a] = std::max(built.column_interval[a], interval);
+      built.column_interval[b] = std::max(built.column_interval[b], interval);
+    }
+}
+StripColumns build_columns(const Polygon& surface, double back_y, double h, double interior,
+                           bool material_below) {
   const std::size_t n_surface = surface.size();
   StripColumns out;
   std::vector<Column>& columns = out.columns;
@@ -138,7 +179,11 @@ StripColumns build_columns(const Polygon& surface, double back_y, double h, bool
     const std::size_t k = material_below ? n_surface - 1 - c : c;
     const Vec2& top = surface[k];
     const double height = std::abs(top.y() - back_y);
-    const int intervals = std::max(1, static_cast<int>(std::ceil(height / h - 1e-9)));
+    const bool graded = interior > h && height > h;
+    const std::vector<double> depth =
+        graded ? graded_depths(height, h, interior) : std::vector<double>();
+    const int intervals = graded ? static_cast<int>(depth.size()) - 1
+                                 : std::max(1, static_cast<int>(std::ceil(height / h - 1e-9)));
     Column& column = columns[c];
     column.x = top.x();
     node_column[k] = static_cast<int>(c);
@@ -149,7 +194,9 @@ StripColumns build_columns(const Polygon& surface, double back_y, double h, bool
         from_back.push_back(static_cast<int>(k));
         continue;
       }
-      const double y = back_y + (top.y() - back_y) * static_cast<double>(i) / intervals;
+      const double y =
+          graded ? top.y() + (back_y - top.y()) * depth[static_cast<std::size_t>(i)] / height
+                 : back_y + (top.y() - back_y) * static_cast<double>(i) / intervals;
       from_back.push_back(static_cast<int>(nodes.size()));
       nodes.emplace_back(top.x(), y);
       node_column.push_back(static_cast<int>(c));
@@ -187,8 +234,14 @@ PeriodicStripDiscretization discretize_periodic_strip(const Polygon& surface,
   const double period = std::abs(closing_shift_x);
   const double h = params.mesh.spacing;
   check_strip_input(surface, closing_shift_x, back_y, h, body_name);
+  const double interior = params.mesh.interior_spacing;
+  SG_VERIFY(std::isfinite(interior) && (interior == 0.0 || interior >= h),
+            "body '" << body_name << "': interior spacing " << interior
+                     << " must be 0 (uniform) or at least the surface spacing h=" << h
+                     << " (a graded strip coarsens towards its back face)");
   const bool material_below = closing_shift_x < 0.0;
-  StripColumns built = build_columns(surface, back_y, h, material_below);
+  StripColumns built =
+      build_columns(surface, back_y, h, params.mesh.interior_spacing, material_below);
   std::vector<Column>& columns = built.columns;
   std::vector<Vec2>& nodes = built.nodes;
   std::vector<int>& node_column = built.node_column;
@@ -218,7 +271,14 @@ PeriodicStripDiscretization discretize_periodic_strip(const Polygon& surface,
   for (const double shift : {0.0, -period, period})
     for (const Vec2& p : nodes)
       extended.emplace_back(p.x() + shift, p.y());
-  const MlsShapeFunctions mls(extended, params.mls, body_name);
+  std::vector<double> min_support;  // graded strips only (see set_column_intervals)
+  if (interior > h) {
+    set_column_intervals(built);
+    for (int image = 0; image < 3; ++image)
+      for (double interval : built.column_interval)
+        min_support.push_back(kGradedStripSupportPerInterval * interval);
+  }
+  const MlsShapeFunctions mls(extended, params.mls, body_name, min_support);
   const std::vector<double>& radius = mls.support_radius();
   d.support_radius.assign(radius.begin(), radius.begin() + static_cast<std::ptrdiff_t>(n));
 

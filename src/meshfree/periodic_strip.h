@@ -57,7 +57,12 @@ struct PeriodicStripDiscretization {
 // below its surface, back_y under every surface point) or strictly increasing with
 // closing_shift_x = +L (a body above, back_y over every point); the last point joins the
 // first shifted by closing_shift_x. Nodes in a column are spaced by at most about
-// params.mesh.spacing; params.mls and params.gauss_points as for any body. Throws sg::Error
+// params.mesh.spacing or, graded (params.mesh.interior_spacing > spacing, issue #32), by a
+// spacing that grows linearly with depth from params.mesh.spacing at the surface to
+// params.mesh.interior_spacing at the back face (the columns stay under the surface points,
+// so the cells near the back face are elongated in y by up to that ratio, and each MLS
+// support reaches at least 1.5 times its node's column interval); params.mls and
+// params.gauss_points as for any body. Throws sg::Error
 // naming `body_name` for a surface that is not monotonic in x or spans a period or more, a
 // back face on the wrong side, fewer than 3 columns, or a period too short for the supports.
 PeriodicStripDiscretization discretize_periodic_strip(const Polygon& surface,

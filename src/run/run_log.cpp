@@ -26,17 +26,29 @@ void write_parameters(std::ostream& out, const ScenarioDef& s) {
       << "\nfield_period = " << s.field_period << "\nfield_format = \""
       << (s.field_format == FieldFormat::ascii ? "ascii" : "binary")
       << "\"\ncheckpoint_period = " << s.checkpoint_period
-      << "\n\n[discretization]\nnode_spacing = " << s.discretization.mesh.spacing
-      << "\nmls_neighbours = " << s.discretization.mls.neighbours
+      << "\n\n[discretization]\nnode_spacing = " << s.discretization.mesh.spacing;
+  // Graded node density (issue #32): written only when set, so a uniform run's log is as it was.
+  if (s.discretization.mesh.interior_spacing > 0.0)
+    out << "\ninterior_spacing = " << s.discretization.mesh.interior_spacing;
+  out << "\nmls_neighbours = " << s.discretization.mls.neighbours
       << "\nmls_support_factor = " << s.discretization.mls.support_factor
       << "\ngauss_points = " << s.discretization.gauss_points
       << "\nsmoothing_iterations = " << s.discretization.mesh.smoothing_iterations
       << "\n\n[physics]\ngravity = [" << s.gravity.x() << ", " << s.gravity.y() << "]\n";
-  for (const MaterialDef& m : s.materials)
+  for (std::size_t i = 0; i < s.materials.size(); ++i) {
+    const MaterialDef& m = s.materials[i];
     out << "\n[[materials]]\nname = \"" << m.name << "\"\nlaw = \"" << to_string(m.law)
         << "\"\nyoung = " << m.young << "\npoisson = " << m.poisson << "\ndensity = " << m.density
         << "\ndamping = " << m.damping << "\ndamping_model = \"" << to_string(m.damping_model)
         << "\"\n";
+    // A material's own node spacings, when they differ from [discretization]'s.
+    if (i < s.material_spacing.size()) {
+      const NodeSpacing& own = s.material_spacing[i];
+      if (own.contour != s.discretization.mesh.spacing ||
+          own.interior != s.discretization.mesh.interior_spacing)
+        out << "node_spacing = " << own.contour << "\ninterior_spacing = " << own.interior << "\n";
+    }
+  }
 }
 
 void write_model(std::ostream& out, const Simulation& sim) {

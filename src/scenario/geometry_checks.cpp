@@ -70,16 +70,24 @@ void check_periodic_bodies(const ScenarioDef& s, const TomlReader& root) {
   }
 }
 
+// Grains with a node spacing of their own (from their material or component, issue #32) are
+// checked against it when it is read (resolve_shear_cell_spacing), not against node_spacing.
+bool own_spacing(const ScenarioDef& s, const NodeSpacing& spacing) {
+  return spacing.contour > 0.0 && spacing.contour != s.discretization.mesh.spacing;
+}
+
 // The largest grain size a [shear_cell] or [compaction_box] may generate (0: none).
 double largest_generated_diameter(const ScenarioDef& s) {
   double d = 0.0;
   auto add_components = [&](const std::vector<GrainComponentDef>& components) {
     for (const GrainComponentDef& c : components)
-      d = std::max(d, c.shape.kind == GrainShapeKind::ellipse ? c.shape.major_axis.max
-                                                              : c.shape.diameter.max);
+      if (!own_spacing(s, c.spacing))
+        d = std::max(d, c.shape.kind == GrainShapeKind::ellipse ? c.shape.major_axis.max
+                                                                : c.shape.diameter.max);
   };
   if (s.shear_cell) {
-    if (s.shear_cell->components.empty()) d = s.shear_cell->diameter.max;
+    if (s.shear_cell->components.empty() && !own_spacing(s, s.shear_cell->grain_spacing))
+      d = s.shear_cell->diameter.max;
     add_components(s.shear_cell->components);
   }
   if (s.compaction_box) add_components(s.compaction_box->components);
@@ -132,10 +140,12 @@ double smallest_generated_disc(const ScenarioDef& s) {
   auto take = [&](double v) { d = d == 0.0 ? v : std::min(d, v); };
   auto add_components = [&](const std::vector<GrainComponentDef>& components) {
     for (const GrainComponentDef& c : components)
-      if (!c.rigid && c.shape.kind == GrainShapeKind::disc) take(c.shape.diameter.min);
+      if (!c.rigid && c.shape.kind == GrainShapeKind::disc && !own_spacing(s, c.spacing))
+        take(c.shape.diameter.min);
   };
   if (s.shear_cell) {
-    if (s.shear_cell->components.empty()) take(s.shear_cell->diameter.min);
+    if (s.shear_cell->components.empty() && !own_spacing(s, s.shear_cell->grain_spacing))
+      take(s.shear_cell->diameter.min);
     add_components(s.shear_cell->components);
   }
   if (s.compaction_box) add_components(s.compaction_box->components);
@@ -166,6 +176,7 @@ void check_node_spacing(const ScenarioDef& s, const TomlReader& root) {
   const std::vector<TomlReader> grains = root.array_of_tables("grains");
   for (std::size_t i = 0; i < s.grains.size() && i < grains.size(); ++i) {
     const GrainSpec& g = s.grains[i];
+    if (own_spacing(s, g.spacing)) continue;  // left to the mesher, which names the grain
     const double d = equivalent_diameter(g);
     if (!g.rigid && g.shape != GrainShape::contour && h > 0.5 * d) {
       const std::string message = "node spacing " + number(h) + " is too large for grain '" +

@@ -70,7 +70,7 @@ void check_contact_reach(const TomlReader& root, const ScenarioDef& s,
   if (contact && contact->has("cutoff")) contact->fail("cutoff", message.str());
   if (contact && contact->has("skin")) contact->fail("skin", message.str());
   // The default cutoff: max(h / 4, 1.5 x the largest tensile reach) (read_contact_settings).
-  if (reach_law < 0 || 0.25 * s.discretization.mesh.spacing >= 1.5 * cohesive_reach) {
+  if (reach_law < 0 || 0.25 * finest_contour_spacing(s) >= 1.5 * cohesive_reach) {
     const std::optional<TomlReader> d = root.table("discretization");
     message << ": it follows the node spacing (cutoff = node_spacing / 4)";
     if (d && d->has("node_spacing")) d->fail("node_spacing", message.str());
@@ -114,11 +114,13 @@ ScenarioDef read_scenario(const TomlDocument& document, const std::filesystem::p
   const std::set<std::string> material_names = read_materials(root, s);
   if (auto t = root.table("shear_cell")) {
     s.shear_cell = read_shear_cell(*t, material_names);
+    resolve_shear_cell_spacing(*t, s);
     check_first_body_drives(*t, *s.shear_cell, TravelLimit(s));
   }
   if (auto t = root.table("compaction_box")) {
     if (s.shear_cell) t->fail("width", "a scenario holds a [shear_cell] or a [compaction_box]");
     s.compaction_box = read_compaction_box(*t, material_names);
+    refuse_material_spacing_in_compaction_box(root, s);
     TravelLimit(s).check_speed(*t, "lid_velocity", s.compaction_box->lid_velocity,
                                "the compaction box's lid");
   }
@@ -189,17 +191,21 @@ Model build_model(const ScenarioDef& scenario) {
       if (scenario.materials[i].name == name) return static_cast<MaterialId>(i);
     SG_THROW("unknown material '" << name << "'");
   };
-  const double h = scenario.discretization.mesh.spacing;
+  // A body's contour spacing: its own (NodeSpacing, from its material), else the scenario's.
+  auto contour_spacing = [&](const NodeSpacing& own) {
+    return own.contour > 0.0 ? own.contour : scenario.discretization.mesh.spacing;
+  };
   model.periodic_x = scenario.periodic_x;
   model.x_min = scenario.x_min;
   model.x_max = scenario.x_max;
   for (const GrainSpec& g : scenario.grains) {
+    const double h = contour_spacing(g.spacing);
     if (g.rigid) {
       add_rigid_grain(model, g, material_id(g.material), h);
       continue;
     }
     const BodyId b = model.add_deformable_body(g.name, grain_contour(g, h), material_id(g.material),
-                                               scenario.discretization);
+                                               with_spacing(scenario.discretization, g.spacing));
     if (g.stretch != Vec2(1.0, 1.0)) set_affine_deformation(model, b, g.stretch.asDiagonal());
     set_rigid_velocity(model, b, g.velocity, g.spin);
   }
@@ -220,10 +226,10 @@ Model build_model(const ScenarioDef& scenario) {
                        box->grain_material.empty() ? 0 : material_id(box->grain_material),
                        material_id(box->wall_material), scenario.discretization);
   for (const WallDef& w : scenario.walls)
-    add_wall(model, w, material_id(w.material), h);
+    add_wall(model, w, material_id(w.material), contour_spacing(w.spacing));
   for (const StripDef& strip : scenario.strips)
     add_strip(model, strip, material_id(strip.material), scenario.x_min, scenario.x_max,
-              scenario.discretization);
+              with_spacing(scenario.discretization, strip.spacing));
   return model;
 }
 

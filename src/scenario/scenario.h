@@ -45,6 +45,8 @@ struct GrainSpec {
   // edge subdivided at the node spacing when the body is built.
   Polygon contour;
   DriveDef drive;  // rigid grains: driven axes (unset: free)
+  // Its node spacings: its material's (resolved at load; 0: the [discretization] spacing).
+  NodeSpacing spacing;
 };
 
 // A rigid wall: a rectangle, fixed or moving at an imposed velocity.
@@ -54,6 +56,7 @@ struct WallDef {
   std::string material;
   Vec2 velocity = Vec2::Zero();  // imposed velocity (length / time); rotation is held
   DriveDef drive;                // axes driven otherwise than by `velocity` (docs/scenario.md)
+  NodeSpacing spacing;           // its material's contour spacing (0: [discretization]'s)
 };
 
 // A periodic strip (a first body) spanning the periodic cell [x_min, x_max) outside a
@@ -65,7 +68,8 @@ struct StripDef {
   bool rigid = true;
   double surface_y = 0.0, back_y = -1.0;  // length
   SurfaceProfileDef profile;
-  DriveDef drive;                                    // unset axes: held (velocity 0)
+  DriveDef drive;       // unset axes: held (velocity 0)
+  NodeSpacing spacing;  // its material's: surface spacing and back-face spacing (0: none)
   bool above() const { return back_y > surface_y; }  // the strip is above the gap
 };
 
@@ -103,13 +107,18 @@ struct ScenarioDef {
   // [physics]
   Vec2 gravity = Vec2::Zero();
   std::vector<MaterialDef> materials;
+  // Per materials[i]: the node spacings of the bodies of that material (issue #32), resolved
+  // at load: its node_spacing / interior_spacing keys, else [discretization]'s.
+  std::vector<NodeSpacing> material_spacing;
   std::vector<GrainSpec> grains;
   std::vector<WallDef> walls;
   std::vector<StripDef> strips;  // [[strips]] (requires [periodic])
   // [[contact_laws]] and [contact]: no laws, no contacts.
   std::vector<ContactLawDef> contact_laws;
-  double contact_cutoff = 0.0;  // 0: a quarter of the node spacing, at least the cohesive reach
-  double contact_skin = 0.0;    // 0: equal to the cutoff
+  // 0: a quarter of the finest contour spacing (finest_contour_spacing), at least 1.5 times
+  // the cohesive reach.
+  double contact_cutoff = 0.0;
+  double contact_skin = 0.0;  // 0: equal to the cutoff
   // [shear_cell]: the third-body cell builder (periodic over [0, length)).
   std::optional<ShearCellDef> shear_cell;
   // [compaction_box]: four rigid walls, the lid driven down (scenario/compaction_box.h).
@@ -118,6 +127,11 @@ struct ScenarioDef {
   bool periodic_x = false;
   double x_min = 0.0, x_max = 0.0;
 };
+
+// The finest contour node spacing of a scenario: [discretization] node_spacing, or a finer one
+// set for a material or a builder's grain component (issue #32). The default contact cutoff
+// follows it.
+double finest_contour_spacing(const ScenarioDef& scenario);
 
 // The material-pair table of a scenario (requires contact laws).
 MaterialPairTable contact_law_table(const ScenarioDef& scenario);

@@ -17,7 +17,8 @@ namespace sg {
 namespace {
 
 MaterialDef read_material(const TomlReader& t) {
-  t.reject_unknown_keys({"name", "law", "young", "poisson", "density", "damping", "damping_model"});
+  t.reject_unknown_keys({"name", "law", "young", "poisson", "density", "damping", "damping_model",
+                         "node_spacing", "interior_spacing"});
   MaterialDef m;
   m.name = t.string("name");
   m.law = t.named_value("law", kMaterialLaws, MaterialLaw::neo_hookean);
@@ -221,7 +222,9 @@ std::set<std::string> read_materials(const TomlReader& root, ScenarioDef& s) {
   std::set<std::string> material_names;
   for (const TomlReader& t : root.array_of_tables("materials")) {
     s.materials.push_back(read_material(t));
-    check_material_frequency(t, s.materials.back(), s.discretization.mesh.spacing);
+    s.material_spacing.push_back(read_node_spacing(
+        t, NodeSpacing{s.discretization.mesh.spacing, s.discretization.mesh.interior_spacing}));
+    check_material_frequency(t, s.materials.back(), s.material_spacing.back().contour);
     if (!material_names.insert(s.materials.back().name).second)
       t.fail("name", "material '" + s.materials.back().name + "' is defined twice");
   }
@@ -258,6 +261,7 @@ void read_grains(const TomlReader& root, ScenarioDef& s,
             "unknown material '" + s.grains[k].material + "' (grain '" + s.grains[k].name + "')");
       if (!body_names.insert(s.grains[k].name).second)
         grains[i].fail("name", "grain name '" + s.grains[k].name + "' is used twice");
+      s.grains[k].spacing = material_spacing(s, s.grains[k].material);
       tables.push_back(&grains[i]);
     }
   }
@@ -277,6 +281,7 @@ void read_walls(const TomlReader& root, ScenarioDef& s, const std::set<std::stri
       walls[i].fail("material", "unknown material '" + s.walls.back().material + "'");
     if (!body_names.insert(s.walls.back().name).second)
       walls[i].fail("name", "body name '" + s.walls.back().name + "' is used twice");
+    s.walls.back().spacing = material_spacing(s, s.walls.back().material);
   }
 }
 

@@ -40,4 +40,16 @@ void check_profile(const TomlReader& t, const SurfaceProfileDef& profile, double
 // [shear_cell].
 ShearCellDef read_shear_cell(const TomlReader& t, const std::set<std::string>& material_names);
 
+// Node spacings (scenario_spacing.cpp, issue #32). The spacings table `t` sets with its keys
+// node_spacing and interior_spacing on top of `inherited`: node_spacing alone makes the body
+// uniform at it; interior_spacing below the contour spacing it applies to is refused.
+NodeSpacing read_node_spacing(const TomlReader& t, const NodeSpacing& inherited);
+// The resolved spacings of a material's bodies (empty for an unknown name).
+NodeSpacing material_spacing(const ScenarioDef& s, const std::string& material);
+// The shear cell's (`t`: its table): default discs and first bodies from their materials,
+// each component from its own keys over its material's.
+void resolve_shear_cell_spacing(const TomlReader& t, ScenarioDef& s);
+// A [compaction_box] meshes with [discretization]: node spacings on its materials are refused.
+void refuse_material_spacing_in_compaction_box(const TomlReader& root, const ScenarioDef& s);
+
 }  // namespace sg

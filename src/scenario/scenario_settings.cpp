@@ -51,9 +51,12 @@ void read_output(const TomlReader& root, ScenarioDef& s) {
 
 void read_discretization(const TomlReader& root, ScenarioDef& s) {
   if (auto t = root.table("discretization")) {
-    t->reject_unknown_keys({"node_spacing", "mls_neighbours", "mls_support_factor", "gauss_points",
-                            "smoothing_iterations"});
+    t->reject_unknown_keys({"node_spacing", "interior_spacing", "mls_neighbours",
+                            "mls_support_factor", "gauss_points", "smoothing_iterations"});
     s.discretization.mesh.spacing = t->positive("node_spacing", 0.1);
+    if (t->has("interior_spacing"))
+      s.discretization.mesh.interior_spacing =
+          read_node_spacing(*t, NodeSpacing{s.discretization.mesh.spacing, 0.0}).interior;
     s.discretization.mesh.smoothing_iterations =
         static_cast<int>(t->integer("smoothing_iterations", 10));
     s.discretization.mls.neighbours = static_cast<int>(t->integer("mls_neighbours", 8));
@@ -86,7 +89,7 @@ void read_contact_settings(const TomlReader& root, ScenarioDef& s, double cohesi
               std::to_string(cohesive_reach));
   }
   if (s.contact_cutoff == 0.0)
-    s.contact_cutoff = std::max(0.25 * s.discretization.mesh.spacing, 1.5 * cohesive_reach);
+    s.contact_cutoff = std::max(0.25 * finest_contour_spacing(s), 1.5 * cohesive_reach);
 }
 
 void read_periodic(const TomlReader& root, ScenarioDef& s) {

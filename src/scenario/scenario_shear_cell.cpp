@@ -18,8 +18,9 @@ SizeRangeDef read_size_range(const TomlReader& t, const char* key) {
 // One [[shear_cell.components]]: a shape law, its number fraction, material and kind.
 GrainComponentDef read_shear_cell_component(const TomlReader& t,
                                             const std::set<std::string>& material_names) {
-  t.reject_unknown_keys(
-      {"name", "shape", "fraction", "diameter", "major_axis", "minor_axis", "material", "rigid"});
+  // node_spacing and interior_spacing: read by resolve_shear_cell_spacing, over the material's.
+  t.reject_unknown_keys({"name", "shape", "fraction", "diameter", "major_axis", "minor_axis",
+                         "material", "rigid", "node_spacing", "interior_spacing"});
   GrainComponentDef c;
   c.shape.kind = t.one_of("shape", {"disc", "ellipse"}, "disc") == "disc" ? GrainShapeKind::disc
                                                                           : GrainShapeKind::ellipse;

@@ -92,6 +92,7 @@ void read_strips(const TomlReader& root, ScenarioDef& s,
     if (!body_names.insert(d.name).second)
       t.fail("name", "body name '" + d.name + "' is used twice");
     d.rigid = t.boolean("rigid", true);
+    d.spacing = material_spacing(s, d.material);
     d.surface_y = t.number("surface_y");
     d.back_y = t.number("back_y");
     if (d.back_y == d.surface_y)

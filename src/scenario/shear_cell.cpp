@@ -32,10 +32,12 @@ void add_grains(Model& model, const std::vector<GrainDef>& grains, const Packing
         mixture.components[static_cast<std::size_t>(grains[i].component)].material;
     const MaterialId material = name.empty() ? grain_material : material_by_name(model, name);
     const std::string body_name = "grain_" + std::to_string(i);
+    const NodeSpacing& own =
+        mixture.components[static_cast<std::size_t>(grains[i].component)].spacing;
     if (grains[i].rigid)
       model.add_rigid_body(body_name, packed.contours[i], material);
     else
-      model.add_deformable_body(body_name, packed.contours[i], material, params);
+      model.add_deformable_body(body_name, packed.contours[i], material, with_spacing(params, own));
   }
 }
 
@@ -205,12 +207,13 @@ MixtureDef shear_cell_mixture(const ShearCellDef& def, double contour_spacing) {
     component.shape.kind = GrainShapeKind::disc;
     component.shape.diameter = def.diameter;
     component.material.clear();
+    component.spacing = def.grain_spacing;
     mixture.components.push_back(component);
   } else {
     mixture.components = def.components;
   }
   for (GrainComponentDef& c : mixture.components)
-    c.shape.contour_spacing = contour_spacing;
+    c.shape.contour_spacing = c.spacing.contour > 0.0 ? c.spacing.contour : contour_spacing;
   return mixture;
 }
 
@@ -252,7 +255,9 @@ ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId g
   model.x_min = 0.0;
   model.x_max = period;
 
-  const FirstBodyProfiles profiles = first_body_profiles(def, h);
+  const double first_body_h =
+      def.first_body_spacing.contour > 0.0 ? def.first_body_spacing.contour : h;
+  const FirstBodyProfiles profiles = first_body_profiles(def, first_body_h);
   const double bottom_peak = highest(profiles.bottom);
   const double top_valley = lowest(profiles.top);
 
@@ -290,7 +295,7 @@ ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId g
   }
   if (def.first_bodies == FirstBodyKind::deformable)
     add_deformable_first_bodies(model, def, profiles, surfaces, info, closing_speed, servo,
-                                first_body_material, params);
+                                first_body_material, with_spacing(params, def.first_body_spacing));
   else
     add_rigid_first_bodies(model, def, surfaces, closing_speed, servo, first_body_material);
   add_grains(model, grains, packed, mixture, grain_material, params);

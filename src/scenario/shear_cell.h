@@ -45,8 +45,14 @@ struct ShearCellDef {
   int grains = 60;                                      // N
   SizeRangeDef diameter{0.85, 1.15, SizeLaw::uniform};  // paper 001 (when no components)
   // Grain mixture; empty: discs of `diameter` in grain_material. A component with an empty
-  // material uses grain_material; its contour spacing is set to the node spacing.
+  // material uses grain_material; its contour spacing is its own node spacing (its
+  // GrainComponentDef::spacing, else grain_spacing for the default discs), else the node
+  // spacing of the discretization.
   std::vector<GrainComponentDef> components;
+  // Node spacings (issue #32; 0: the discretization's), set at load from the materials: of the
+  // default discs (grain_material's) and of the first bodies (first_body_material's: their
+  // surface sampling, and a deformable strip's grading towards its back face).
+  NodeSpacing grain_spacing, first_body_spacing;
   std::string grain_material;       // a [[materials]] name
   std::string first_body_material;  // a [[materials]] name
   double roughness_rms = 0.3;       // RMS height of both surfaces (length)
@@ -92,7 +98,7 @@ struct ShearCellInfo {
 double shear_cell_grain_size(const ShearCellDef& def);
 
 // The mixture add_shear_cell generates: the components, or one disc component of `diameter`;
-// contour spacing = `contour_spacing`.
+// contour spacing = each component's own (its spacing.contour), else `contour_spacing`.
 MixtureDef shear_cell_mixture(const ShearCellDef& def, double contour_spacing);
 
 // Critical damping of the servo-loaded top (mass m) on the layer: c = 2 zeta sqrt(k_eff m)

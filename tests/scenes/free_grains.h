@@ -28,6 +28,24 @@ inline DiscretizationParams discretization(double spacing, int gauss_points = 3)
   return p;
 }
 
+// Graded (issue #32): contour nodes at `spacing`, coarsening to `interior_spacing` at the
+// body's deepest point (meshfree/domain_mesh.h).
+inline DiscretizationParams graded_discretization(double spacing, double interior_spacing,
+                                                  int gauss_points = 3) {
+  DiscretizationParams p = discretization(spacing, gauss_points);
+  p.mesh.interior_spacing = interior_spacing;
+  return p;
+}
+
+inline Model single_graded_disc(const MaterialDef& material, double radius, double spacing,
+                                double interior_spacing, int gauss_points = 3) {
+  Model model;
+  const MaterialId m = model.add_material(material);
+  model.add_deformable_body("disc", make_disc(Vec2(0, 0), radius, spacing), m,
+                            graded_discretization(spacing, interior_spacing, gauss_points));
+  return model;
+}
+
 // One disc of `radius` centred at `center`, node spacing `spacing`.
 inline BodyId add_disc(Model& model, MaterialId material, const Vec2& center, double radius,
                        double spacing, const std::string& name = "disc", int gauss_points = 3) {
