@@ -96,7 +96,7 @@ ServoLoad servo_load(const Model& model, const ShearCellDef& def, MaterialId gra
                      double packed_height, double node_spacing, double grain_size, double mass,
                      ShearCellInfo& info) {
   info.normal_force = def.pressure * def.length;
-  const MaterialDef& grain = model.material_defs[static_cast<std::size_t>(grain_material)];
+  const MaterialDef& grain = model.material_def(grain_material);
   info.servo_damping =
       def.servo_damping > 0.0
           ? def.servo_damping
@@ -136,7 +136,7 @@ void add_deformable_first_bodies(Model& model, const ShearCellDef& def,
   // (the response to a ramp of duration tau rings with amplitude ~ |sin(omega tau / 2)|), where
   // the sharp switch makes a strip ring with a force amplitude of M V omega / 2, larger than
   // the friction force it carries.
-  const MaterialDef& fb = model.material_defs[static_cast<std::size_t>(first_body_material)];
+  const MaterialDef& fb = model.material_def(first_body_material);
   const double shear_speed = std::sqrt(fb.young / (2.0 * (1.0 + fb.poisson) * fb.density));
   const double ramp = std::min(4.0 * def.first_body_thickness / shear_speed, def.compaction_time);
   const double t0 = def.compaction_time - 0.5 * ramp, t1 = def.compaction_time + 0.5 * ramp;
