@@ -1,6 +1,5 @@
 // softgrain render RUN_DIR: PNG snapshots of a field (and an MP4 when ffmpeg is present).
 #include <algorithm>
-#include <cmath>
 #include <iostream>
 #include <limits>
 #include <optional>
@@ -122,16 +121,7 @@ const Registration registration(
          refuse_links_in_run_folder(dir);
          const RunInfo run = read_run_info(dir);
          if (run.has_scenario) {
-           options.periodic = run.periodic;
-           options.title = run.name;
-           // As the run normalized them (io/vtk_writer.h global_strain_rate).
-           options.strain_rate_unit =
-               run.shear_cell && std::isfinite(run.parameters.gap) && run.parameters.velocity > 0.0
-                   ? "V/D"
-                   : "1/time";
-           // The first bodies slide at +-V/2: the default range of the velocity fields.
-           if (run.shear_cell && run.parameters.velocity > 0.0)
-             options.shear_velocity = run.parameters.velocity;
+           set_from_run(options, run);
            if (options.field == "coherence" || options.field == "agglomerates") {
              // Only grains carry a coherence: drop the driven bodies, walls, first bodies.
              std::vector<std::string> driven;

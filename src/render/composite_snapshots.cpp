@@ -1,6 +1,5 @@
 #include "render/composite_snapshots.h"
 
-#include <cmath>
 #include <exception>
 
 #include "render/run_folder.h"
@@ -22,16 +21,10 @@ RenderOptions snapshot_options(const RunInfo& run, const std::string& field) {
   o.height = kSnapshotHeight;
   o.last_frame_only = true;
   o.movie = false;
-  o.periodic = run.periodic;
-  o.title = run.name;
-  const double velocity = run.parameters.velocity;
-  // As the run normalized the strain rate (io/vtk_writer.h global_strain_rate).
-  o.strain_rate_unit =
-      run.shear_cell && std::isfinite(run.parameters.gap) && velocity > 0.0 ? "V/D" : "1/time";
+  set_from_run(o, run);
   // velocity_x over +-V/2, the first bodies' velocities (render/colour_range.h); the strain
   // rate on a log scale, three decades below its 99th percentile (linear, the shear bands
   // leave the grains' interiors one colour); the stress over its 1st-99th percentiles.
-  if (std::isfinite(velocity) && velocity > 0.0) o.shear_velocity = velocity;
   o.robust_range = !(field == "velocity_x" && o.shear_velocity);  // robust overrides +-V/2
   o.log_scale = field == "strain_rate";
   return o;

@@ -118,6 +118,16 @@ Style style_for(const RenderOptions& options) {
 
 }  // namespace
 
+void set_from_run(RenderOptions& options, const RunInfo& run) {
+  options.periodic = run.periodic;
+  options.title = run.name;
+  const double velocity = run.parameters.velocity;
+  const bool gap_loaded_shear =
+      run.shear_cell && std::isfinite(run.parameters.gap) && velocity > 0.0;
+  options.strain_rate_unit = gap_loaded_shear ? "V/D" : "1/time";
+  if (run.shear_cell && velocity > 0.0) options.shear_velocity = velocity;
+}
+
 RenderResult render_run(const fs::path& run_dir, const RenderOptions& options) {
   check_options(options);
   const fs::path pvd = run_dir / "fields.pvd";

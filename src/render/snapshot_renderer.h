@@ -46,6 +46,7 @@
 #include <vector>
 
 #include "geometry/bounding_box.h"
+#include "render/run_folder.h"
 #include "render/vtu_reader.h"
 
 namespace sg {
@@ -110,6 +111,11 @@ bool field_defined_on_rigid(const std::string& field);
 // True for the fields that are never negative (the magnitudes, norms, rates and von Mises):
 // those a log colour scale can draw.
 bool field_is_nonnegative(const std::string& field);
+
+// What the run's scenario tells the pictures (run.has_scenario): the periodic span, the title,
+// the strain rate's unit as the run normalized it (io/vtk_writer.h global_strain_rate) and,
+// for a shear cell, V (its first bodies slide at +-V/2: the velocity fields' default range).
+void set_from_run(RenderOptions& options, const RunInfo& run);
 
 // Reads RUN_DIR/fields.pvd and the snapshots drawn; writes RUN_DIR/render/<field>_NNNNNN.png
 // (NNNNNN the snapshot's number) and, if possible, RUN_DIR/render/<field>.mp4. Throws
