@@ -4,7 +4,6 @@
 // output (run/snapshot_output.h) from the last committed snapshot, through rollbacks.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -27,10 +26,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path scratch_file(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("softgrain_test_strain_rate_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
+  return scenes::process_temp_dir("strain_rate") / name;
 }
 
 // The grain at time t of a homogeneous deformation x = F(t) X, velocity parameters

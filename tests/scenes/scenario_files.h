@@ -4,6 +4,7 @@
 // process needs a folder of its own).
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -16,12 +17,36 @@
 
 namespace sg::scenes {
 
-// <temp>/softgrain_test_<tag>_<pid>, emptied the first time this process asks for it.
+// The folders process_temp_dir made, removed when the test process exits if every test passed
+// (a failed test's files stay for a look; so do all of them with SOFTGRAIN_KEEP_TEST_FILES set).
+// Without this, every test process left its folder in the temp directory for good.
+class ProcessTempDirs {
+ public:
+  ProcessTempDirs() = default;
+  ProcessTempDirs(const ProcessTempDirs&) = delete;
+  ProcessTempDirs& operator=(const ProcessTempDirs&) = delete;
+  ~ProcessTempDirs() {
+    const auto* unit_test = ::testing::UnitTest::GetInstance();
+    if (unit_test->Failed() || std::getenv("SOFTGRAIN_KEEP_TEST_FILES") != nullptr) return;
+    for (const auto& dir : dirs_) {
+      std::error_code ignored;  // a folder already gone, or busy, is left as it is
+      std::filesystem::remove_all(dir, ignored);
+    }
+  }
+  // True the first time `dir` is seen.
+  bool add(const std::filesystem::path& dir) { return dirs_.insert(dir).second; }
+
+ private:
+  std::set<std::filesystem::path> dirs_;
+};
+
+// <temp>/softgrain_test_<tag>_<pid>, emptied the first time this process asks for it and
+// removed at the process's exit (ProcessTempDirs).
 inline std::filesystem::path process_temp_dir(const std::string& tag) {
-  static std::set<std::string> emptied;
+  static ProcessTempDirs made;
   const std::filesystem::path dir = std::filesystem::temp_directory_path() /
                                     ("softgrain_test_" + tag + "_" + std::to_string(::getpid()));
-  if (emptied.insert(tag).second) std::filesystem::remove_all(dir);
+  if (made.add(dir)) std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
 }
