@@ -41,6 +41,61 @@ std::array<Vec2, 3> triangle_points(const VtuMesh& m, std::span<const int> cell,
   return p;
 }
 
+// A rigid body's contour as drawn: each point unwrapped to the periodic image nearest the one
+// before it, so that a body crossing the seam stays whole. A first body spanning the period is
+// written as its open surface (model/model.h Body::open_contour): its walk then ends one period
+// away from its start, `period_shift` (+-L; 0 for a closed contour).
+struct RigidOutline {
+  std::vector<Vec2> points;
+  double period_shift = 0.0;
+  BoundingBox box;
+};
+
+RigidOutline rigid_outline(const VtuMesh& m, std::span<const int> cell, const Style& s) {
+  RigidOutline o;
+  for (int p : cell) {
+    Vec2 q = m.points[static_cast<std::size_t>(p)];
+    if (s.periodic && !o.points.empty()) {
+      const double L = s.periodic->second - s.periodic->first;
+      q.x() -= L * std::round((q.x() - o.points.back().x()) / L);
+    }
+    o.points.push_back(q);
+    o.box.add(q);
+  }
+  if (s.periodic && o.points.size() > 2) {
+    const double L = s.periodic->second - s.periodic->first;
+    const double closing_gap = o.points.front().x() - o.points.back().x();
+    o.period_shift = L * std::round((o.points.back().x() - o.points.front().x()) / L);
+    if (std::abs(closing_gap + o.period_shift) > 0.5 * L) o.period_shift = 0.0;
+  }
+  return o;
+}
+
+// Adds the path of a rigid body at x shift `shift` (a sub-path). A closed contour is closed. An
+// open surface is completed by its seam segment (to its first point one period on) and filled out
+// to the back, beyond the drawn world: the body lies to the left of the surface's direction (the
+// contours are counterclockwise), above a surface written in +x, below one written in -x.
+// `surface_only`: the path of the surface alone, for its outline.
+void add_rigid_path(cairo_t* cr, const Layout& l, const RigidOutline& o, double shift,
+                    bool surface_only) {
+  cairo_new_sub_path(cr);
+  for (const Vec2& q : o.points)
+    cairo_line_to(cr, l.px(q.x() + shift), l.py(q.y()));
+  if (o.period_shift == 0.0) {
+    cairo_close_path(cr);
+    return;
+  }
+  const Vec2& first = o.points.front();
+  cairo_line_to(cr, l.px(first.x() + o.period_shift + shift), l.py(first.y()));
+  if (surface_only) return;
+  const double depth = l.world.hi.y() - l.world.lo.y() + (o.box.hi.y() - o.box.lo.y());
+  const double back = o.period_shift > 0.0 ? std::max(l.world.hi.y(), o.box.hi.y()) + depth
+                                           : std::min(l.world.lo.y(), o.box.lo.y()) - depth;
+  cairo_line_to(cr, l.px(first.x() + o.period_shift + shift), l.py(back));
+  cairo_line_to(cr, l.px(first.x() + shift), l.py(back));
+  cairo_close_path(cr);
+}
+
 // Rigid bodies: filled polygons, coloured by the field where it is defined on them.
 void draw_rigid_bodies(cairo_t* cr, const Layout& l, const Style& s, const VtuMesh& m,
                        const std::vector<double>& value, const std::vector<double>& body) {
@@ -49,30 +104,31 @@ void draw_rigid_bodies(cairo_t* cr, const Layout& l, const Style& s, const VtuMe
     if (m.types[c] != kVtkPolygon) continue;
     const auto cell = m.cell(c);
     if (cell.empty()) continue;
-    BoundingBox b;
+    const RigidOutline outline = rigid_outline(m, cell, s);
     double mean = 0.0;
-    for (int p : cell) {
-      b.add(m.points[static_cast<std::size_t>(p)]);
+    for (int p : cell)
       mean += value[static_cast<std::size_t>(p)];
-    }
     mean /= static_cast<double>(cell.size());
     const Rgb fill =
         rigid_coloured
             ? colour_of(s, s.categorical ? body[static_cast<std::size_t>(cell[0])] : mean)
             : Rgb{0.78, 0.78, 0.78};
-    for (double shift : shifts_for(l, s, b.lo.x(), b.hi.x())) {
-      cairo_new_path(cr);
-      for (int p : cell) {
-        const Vec2& q = m.points[static_cast<std::size_t>(p)];
-        cairo_line_to(cr, l.px(q.x() + shift), l.py(q.y()));
-      }
-      cairo_close_path(cr);
-      cairo_set_source_rgb(cr, fill.r, fill.g, fill.b);
-      cairo_fill_preserve(cr);
-      cairo_set_source_rgba(cr, 0.15, 0.15, 0.15, 0.9);
-      cairo_set_line_width(cr, 1.0);
-      cairo_stroke(cr);
-    }
+    const double x0 = std::min(outline.box.lo.x(), outline.box.lo.x() + outline.period_shift);
+    const double x1 = std::max(outline.box.hi.x(), outline.box.hi.x() + outline.period_shift);
+    // The images filled as one path, so that no seam shows where they meet.
+    const std::vector<double> shifts = shifts_for(l, s, x0, x1);
+    cairo_new_path(cr);
+    for (double shift : shifts)
+      add_rigid_path(cr, l, outline, shift, false);
+    cairo_set_source_rgb(cr, fill.r, fill.g, fill.b);
+    cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+    cairo_fill(cr);
+    cairo_new_path(cr);
+    for (double shift : shifts)
+      add_rigid_path(cr, l, outline, shift, true);
+    cairo_set_source_rgba(cr, 0.15, 0.15, 0.15, 0.9);
+    cairo_set_line_width(cr, 1.0);
+    cairo_stroke(cr);
   }
 }
 
