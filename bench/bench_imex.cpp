@@ -46,7 +46,7 @@ ScenarioDef imex_cell(double alpha, DampingModel model, bool imex) {
   c.roughness_rms = 0.3;
   c.seed = 1;
   c.compaction_time = 3.0;
-  c.extra_time = imex ? "integrator = \"imex\"\n" : "";
+  c.extra_time = imex ? "integrator = \"imex\"\n" : "integrator = \"explicit\"\n";
   const std::filesystem::path file =
       std::filesystem::temp_directory_path() / "softgrain_bench_imex_cell.toml";
   std::ofstream(file) << scenes::shear_cell_scenario(c);
@@ -63,7 +63,7 @@ const StateSnapshot& compacted_state() {
     const ScenarioDef s = imex_cell(0.02, DampingModel::objective, true);
     Model model = build_model(s);
     ContactSystem contacts(model, contact_law_table(s), contact_settings(s));
-    Stepper solver(model, &contacts, integrator_params(s));
+    Stepper solver(model, &contacts, resolve_integrator(s, model, 0.0).params);
     StepController controller(solver, &contacts, StepControlParams{});
     while (solver.state().time < 3.0)
       controller.advance();
@@ -83,7 +83,7 @@ void ImexShearCell(benchmark::State& state) {
   const ScenarioDef s = imex_cell(alpha, damping_model, imex);
   Model model = build_model(s);
   ContactSystem contacts(model, contact_law_table(s), contact_settings(s));
-  Stepper solver(model, &contacts, integrator_params(s));
+  Stepper solver(model, &contacts, resolve_integrator(s, model, 0.0).params);
   restore_state(start, solver, &contacts);
   StepControlParams params;
   params.reestimate_interval = 0;

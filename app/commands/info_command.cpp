@@ -22,8 +22,7 @@ bool has_damped_body(const Model& model) {
 
 // The integrators compared on the model's initial state; the model is left as it was.
 void print_integrators(Model& model, ContactSystem* contacts, const ScenarioDef& scenario,
-                       double contact_stiffness) {
-  const IntegratorParams configured = integrator_params(scenario);
+                       double contact_stiffness, const IntegratorParams& configured) {
   std::cout << "  integrators (measured over 10 steps from the initial state):\n";
   for (const IntegratorCost& c : compare_integrators(model, contacts, scenario.time_step_safety,
                                                      contact_stiffness, configured, 10)) {
@@ -35,7 +34,7 @@ void print_integrators(Model& model, ContactSystem* contacts, const ScenarioDef&
               << 1e3 * c.seconds_per_step << " ms/step, " << c.seconds_per_step * steps_per_unit
               << " s per time unit, "
               << c.seconds_per_step * steps_per_unit * scenario.duration / 3600.0 << " h for "
-              << scenario.duration << " time units" << (is_configured ? "  <- [time]" : "") << "\n";
+              << scenario.duration << " time units" << (is_configured ? "  <- run" : "") << "\n";
   }
 }
 
@@ -50,14 +49,16 @@ int info(const std::string& file) {
                                                contact_settings(scenario));
     contact_stiffness = contacts->max_stiffness();
   }
+  // As `run` resolves it: on the built model, before mass scaling.
+  const IntegratorChoice integrator = resolve_integrator(scenario, model, contact_stiffness);
   std::string mass_scaling;
   if (scenario.mass_scaling_step > 0.0)
     mass_scaling =
         describe(apply_mass_scaling(model, scenario.mass_scaling_step, scenario.time_step_safety,
-                                    contact_stiffness, integrator_params(scenario)),
+                                    contact_stiffness, integrator.params),
                  model);
-  const StableStep stable = estimate_stable_time_step(
-      model, scenario.time_step_safety, contact_stiffness, integrator_params(scenario));
+  const StableStep stable = estimate_stable_time_step(model, scenario.time_step_safety,
+                                                      contact_stiffness, integrator.params);
   const double bytes = static_cast<double>(model.node_count()) * 12 * sizeof(double) +
                        static_cast<double>(model.gauss_rows.entries()) * (4 * sizeof(double) + 4) +
                        static_cast<double>(model.node_rows.entries()) * (4 * sizeof(double) + 4);
@@ -72,16 +73,17 @@ int info(const std::string& file) {
   if (stable.limiting_body >= 0)
     std::cout << "  stable step:   " << stable.dt << " ("
               << (stable.damping_limited ? "damping-limited" : "wave-speed-limited") << ", body '"
-              << model.body(stable.limiting_body).name << "'; "
-              << integrator_params(scenario).name() << " integrator)\n"
+              << model.body(stable.limiting_body).name << "'; " << integrator.params.name()
+              << " integrator)\n"
               << "  steps:         " << static_cast<long>(scenario.duration / stable.dt) << " for "
               << scenario.duration << " time units\n";
+  std::cout << "  integrator:    " << describe(integrator) << "\n";
   if (!mass_scaling.empty()) std::cout << "  " << mass_scaling << "\n";
   std::cout << "  memory:        " << bytes / 1048576.0 << " MiB (node state and shape rows)\n";
   std::cout << "  force kernel:  " << force_kernel().isa
             << " (SOFTGRAIN_SIMD=default selects the baseline one)\n";
   if (stable.limiting_body >= 0 && has_damped_body(model))
-    print_integrators(model, contacts.get(), scenario, contact_stiffness);
+    print_integrators(model, contacts.get(), scenario, contact_stiffness, integrator.params);
   return 0;
 }
 

@@ -44,7 +44,7 @@ Scenario from_file(const std::filesystem::path& file) {
 // With `timing` and a damped body, both integrators' step and measured cost, as the command
 // line prints them (solver/integrator_comparison.h; the model is left as it was).
 py::list integrator_costs(Simulation& sim, const ScenarioDef& def) {
-  const IntegratorParams configured = integrator_params(def);
+  const IntegratorParams& configured = sim.integrator.params;
   const double contact_stiffness = sim.contacts ? sim.contacts->max_stiffness() : 0.0;
   std::array<IntegratorCost, 2> costs;
   {
@@ -99,6 +99,7 @@ py::dict info(const Scenario& s, bool timing) {
   }
   d["first_step"] = sim->first_dt;
   d["integrator"] = sim->solver.integrator().name();
+  d["integrator_choice"] = describe(sim->integrator);  // why, when chosen by default
   d["duration"] = s.def.duration;
   if (!sim->mass_scaling_note.empty()) d["mass_scaling"] = sim->mass_scaling_note.substr(2);
   const double bytes = static_cast<double>(model.node_count()) * 12 * sizeof(double) +

@@ -306,13 +306,14 @@ void measure_step(const ScenarioDef& scenario, Model& model, SampleReport& r) {
     contact_stiffness =
         ContactSystem(model, contact_law_table(scenario), contact_settings(scenario))
             .max_stiffness();
+  const IntegratorParams integrator = resolve_integrator(scenario, model, contact_stiffness).params;
   if (scenario.mass_scaling_step > 0.0)
     r.mass_scaling =
         describe(apply_mass_scaling(model, scenario.mass_scaling_step, scenario.time_step_safety,
-                                    contact_stiffness, integrator_params(scenario)),
+                                    contact_stiffness, integrator),
                  model);
-  const StableStep stable = estimate_stable_time_step(
-      model, scenario.time_step_safety, contact_stiffness, integrator_params(scenario));
+  const StableStep stable =
+      estimate_stable_time_step(model, scenario.time_step_safety, contact_stiffness, integrator);
   r.stable_step = stable.dt;
   r.damping_limited = stable.damping_limited;
   if (stable.limiting_body >= 0) r.limiting_body = model.body(stable.limiting_body).name;

@@ -13,14 +13,16 @@ namespace sg {
 
 namespace {
 
-void write_parameters(std::ostream& out, const ScenarioDef& s) {
+void write_parameters(std::ostream& out, const ScenarioDef& s, const IntegratorChoice& integrator) {
   out << "softgrain run log\nsoftgrain = \"" << softgrain_version() << "\"\ncommit = \""
       << softgrain_commit() << "\"\nscenario = " << s.source.string() << "\nname = " << s.name
       << "\nthreads = " << omp_get_max_threads() << "\nforce_kernel = \"" << force_kernel().isa
       << "\"\n\n[time]\nduration = " << s.duration << "\nsafety = " << s.time_step_safety
       << "\nfixed_step = " << s.fixed_time_step << "\nmass_scaling_step = " << s.mass_scaling_step
-      << "\nintegrator = \"" << (s.implicit_viscosity ? "imex" : "explicit")
-      << "\"\nimex_tolerance = " << s.imex_tolerance
+      << "\nintegrator = \"" << integrator.params.name() << "\""
+      << (integrator.by_default ? "  # default: " + integrator.reason : "")
+      << "\nstep_tolerance = " << integrator.step_tolerance
+      << "\nimex_tolerance = " << s.imex_tolerance
       << "\nimex_refactor_threshold = " << s.imex_refactor_threshold
       << "\n\n[output]\nseries_period = " << s.series_period
       << "\nfield_period = " << s.field_period << "\nfield_format = \""
@@ -72,7 +74,7 @@ void write_run_log(const std::filesystem::path& path, const ScenarioDef& scenari
                    const Simulation& simulation, const std::string& notes) {
   write_file_atomically(path, [&](std::ostream& out) {
     out << std::setprecision(10);
-    write_parameters(out, scenario);
+    write_parameters(out, scenario, simulation.integrator);
     write_model(out, simulation);
     out << notes;
   });

@@ -71,6 +71,7 @@ std::string describe_resume(const SolverState& state) {
 }
 
 void announce_start(std::ostream& out, const Simulation& sim, bool resumed) {
+  out << "softgrain: integrator: " << describe(sim.integrator) << "\n";
   if (!sim.mass_scaling_note.empty()) out << "softgrain: " << sim.mass_scaling_note.substr(2);
   out << "softgrain: " << sim.model.bodies.size() << " bodies, " << sim.model.node_count()
       << " nodes, " << sim.model.gauss_point_count() << " Gauss points; dt = " << sim.first_dt

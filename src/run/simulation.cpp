@@ -14,16 +14,17 @@ std::unique_ptr<ContactSystem> make_contacts(const ScenarioDef& s, Model& model)
 
 // Mass scaling on the built model, before anything is estimated or restored: deterministic,
 // so a resumed run rebuilds the same masses (and the checkpoint fingerprint checks them).
-std::string scale_masses(const ScenarioDef& s, Model& model, const ContactSystem* contacts) {
+std::string scale_masses(const ScenarioDef& s, Model& model, const ContactSystem* contacts,
+                         const IntegratorParams& integrator) {
   if (s.mass_scaling_step <= 0.0) return "";
   const MassScalingReport report =
       apply_mass_scaling(model, s.mass_scaling_step, s.time_step_safety,
-                         contacts ? contacts->max_stiffness() : 0.0, integrator_params(s));
+                         contacts ? contacts->max_stiffness() : 0.0, integrator);
   return "# " + describe(report, model) + "\n";
 }
 
-StepControlParams step_control_params(const ScenarioDef& s, const Model& model,
-                                      std::ostream* progress) {
+StepControlParams step_control_params(const ScenarioDef& s, const IntegratorChoice& integrator,
+                                      const Model& model, std::ostream* progress) {
   StepControlParams p;
   p.on_step_collapse = [&model, progress](const StableStep& now, double first_dt) {
     if (progress)
@@ -32,7 +33,7 @@ StepControlParams step_control_params(const ScenarioDef& s, const Model& model,
   p.safety = s.time_step_safety;
   p.fixed_step = s.fixed_time_step;
   p.reestimate_interval = s.reestimate_interval;
-  p.tolerance = s.step_tolerance;
+  p.tolerance = integrator.step_tolerance;
   return p;
 }
 
@@ -41,24 +42,28 @@ StepControlParams step_control_params(const ScenarioDef& s, const Model& model,
 Simulation::Simulation(const ScenarioDef& scenario, std::ostream* progress)
     : model(build_model(scenario)),
       contacts(make_contacts(scenario, model)),
-      mass_scaling_note(scale_masses(scenario, model, contacts.get())),
+      integrator(resolve_integrator(scenario, model, contacts ? contacts->max_stiffness() : 0.0)),
+      mass_scaling_note(scale_masses(scenario, model, contacts.get(), integrator.params)),
       initial_state_note(check_initial_state(scenario, model, contacts != nullptr, progress)),
-      solver(model, contacts.get(), integrator_params(scenario)),
-      controller(solver, contacts.get(), step_control_params(scenario, model, progress)),
+      solver(model, contacts.get(), integrator.params),
+      controller(solver, contacts.get(),
+                 step_control_params(scenario, integrator, model, progress)),
       first_estimate(controller.last_estimate()),
       first_dt(controller.next_step()),
       // Computed before any restore: the model's fixed data only.
-      fingerprint(fingerprint_of(model, run_settings(scenario, first_dt))) {}
+      fingerprint(fingerprint_of(model, run_settings(scenario, integrator, first_dt))) {}
 
-std::vector<double> run_settings(const ScenarioDef& s, double first_dt) {
+std::vector<double> run_settings(const ScenarioDef& s, const IntegratorChoice& integrator,
+                                 double first_dt) {
   std::vector<double> v = {first_dt,
                            s.series_period,
                            s.field_period,
-                           s.step_tolerance,
+                           integrator.step_tolerance,
                            static_cast<double>(s.reestimate_interval),
                            s.mass_scaling_step};
   // (Appended only when set, so that explicit runs keep their checkpoints bitwise.)
-  if (s.implicit_viscosity) v.insert(v.end(), {1.0, s.imex_tolerance, s.imex_refactor_threshold});
+  if (integrator.params.implicit_viscosity)
+    v.insert(v.end(), {1.0, s.imex_tolerance, s.imex_refactor_threshold});
   if (!s.contact_laws.empty()) {
     const ContactSettings c = contact_settings(s);
     v.insert(v.end(), {c.cutoff, c.skin});

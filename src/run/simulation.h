@@ -23,7 +23,10 @@ class Simulation {
 
   Model model;
   std::unique_ptr<ContactSystem> contacts;  // null: no contact laws
-  std::string mass_scaling_note;            // "# ...\n" for run.log, empty without scaling
+  // The integrator and its step check, as written or chosen on the built model before mass
+  // scaling (scenario.h resolve_integrator); run.log and the run's first line say which.
+  IntegratorChoice integrator;
+  std::string mass_scaling_note;  // "# ...\n" for run.log, empty without scaling
   // Impossible periodic geometry is refused, suspicious initial states are warned about
   // (scenario/geometry_checks.h): the warnings, "# ...\n" lines for run.log.
   std::string initial_state_note;
@@ -36,6 +39,7 @@ class Simulation {
 
 // What a checkpoint must match besides the model: settings that change what the steps
 // compute or what the outputs mean.
-std::vector<double> run_settings(const ScenarioDef& scenario, double first_dt);
+std::vector<double> run_settings(const ScenarioDef& scenario, const IntegratorChoice& integrator,
+                                 double first_dt);
 
 }  // namespace sg

@@ -176,9 +176,20 @@ ContactSettings contact_settings(const ScenarioDef& scenario) {
   return settings;
 }
 
-IntegratorParams integrator_params(const ScenarioDef& scenario) {
-  return IntegratorParams{scenario.implicit_viscosity, scenario.imex_tolerance,
-                          scenario.imex_refactor_threshold};
+IntegratorChoice resolve_integrator(const ScenarioDef& scenario, const Model& model,
+                                    double contact_stiffness) {
+  const IntegratorParams imex =
+      IntegratorParams::imex(scenario.imex_tolerance, scenario.imex_refactor_threshold);
+  if (scenario.integrator == ScenarioIntegrator::automatic)
+    return choose_default_integrator(model, scenario.time_step_safety, contact_stiffness, imex,
+                                     scenario.fixed_time_step, scenario.step_tolerance);
+  // As written: exactly what the key has always meant.
+  IntegratorChoice written;
+  written.params = scenario.integrator == ScenarioIntegrator::imex
+                       ? imex
+                       : IntegratorParams::explicit_integrator();
+  written.step_tolerance = std::max(0.0, scenario.step_tolerance);
+  return written;
 }
 
 Model build_model(const ScenarioDef& scenario) {

@@ -16,6 +16,7 @@
 #include "scenario/contact_law_def.h"
 #include "scenario/drive_def.h"
 #include "scenario/shear_cell.h"
+#include "solver/default_integrator.h"
 #include "solver/integrator_params.h"
 
 #include <optional>
@@ -73,6 +74,9 @@ struct StripDef {
   bool above() const { return back_y > surface_y; }  // the strip is above the gap
 };
 
+// [time] integrator as written.
+enum class ScenarioIntegrator { automatic, explicit_integrator, imex };
+
 struct ScenarioDef {
   std::filesystem::path source;  // the scenario file
   std::string name;              // run name: outputs go to <output_root>/<name>/
@@ -81,13 +85,17 @@ struct ScenarioDef {
   double time_step_safety = 0.8;    // fraction of the estimated critical step
   double fixed_time_step = 0.0;     // > 0: use this step instead of the estimate
   long reestimate_interval = 2000;  // accepted steps between critical-step estimates
-  double step_tolerance = 0.0;      // |energy residual change| per step / energy scale; 0: off
-  double mass_scaling_step = 0.0;   // > 0: scale masses so that the step reaches this (time)
+  // |energy residual change| per step / energy scale; 0: off; < 0 (the key is absent): off,
+  // except when the integrator is chosen imex by default (resolve_integrator).
+  double step_tolerance = -1.0;
+  double mass_scaling_step = 0.0;  // > 0: scale masses so that the step reaches this (time)
   // Run even when the step is absurdly small for the duration (run/run_length.h).
   bool allow_long_run = false;
   // integrator = "imex": the bulk damping of damped deformable bodies implicit in the velocity
-  // (solver/implicit_viscosity.h), the step no longer limited by it; "explicit" (default).
-  bool implicit_viscosity = false;
+  // (solver/implicit_viscosity.h), the step no longer limited by it; "explicit": every force
+  // explicit; absent (automatic): whichever is faster, chosen on the built model
+  // (resolve_integrator, solver/default_integrator.h).
+  ScenarioIntegrator integrator = ScenarioIntegrator::automatic;
   // Relative residual of the objective model's iterative solves; 1e-5 moves mu and p_wb by
   // about 1e-5 from 1e-9 at a third fewer iterations (docs/scenario.md "Integrators").
   double imex_tolerance = 1e-5;
@@ -136,8 +144,12 @@ double finest_contour_spacing(const ScenarioDef& scenario);
 // The material-pair table of a scenario (requires contact laws).
 MaterialPairTable contact_law_table(const ScenarioDef& scenario);
 ContactSettings contact_settings(const ScenarioDef& scenario);
-// The [time] integrator settings, for the stepper, the stable step and mass scaling.
-IntegratorParams integrator_params(const ScenarioDef& scenario);
+// The integrator a run of `scenario` steps with on `model` (built, masses not yet scaled), for
+// the stepper, the stable step and mass scaling, and its step check: as written in [time], or,
+// when `integrator` is absent, imex where it is faster (solver/default_integrator.h; this
+// estimates the model's frequencies once). `contact_stiffness`: the largest contact penalty.
+IntegratorChoice resolve_integrator(const ScenarioDef& scenario, const Model& model,
+                                    double contact_stiffness);
 
 // Reads and validates a scenario file. Errors: "<file>:<line>: key '<key>': <expected>".
 ScenarioDef load_scenario(const std::filesystem::path& file);

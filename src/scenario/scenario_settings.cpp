@@ -19,9 +19,12 @@ void read_time(const TomlReader& root, ScenarioDef& s) {
     s.reestimate_interval = t->integer("reestimate_interval", s.reestimate_interval);
     if (s.reestimate_interval < 0)
       t->fail("reestimate_interval", "expected a number of steps >= 0 (0: never)");
-    s.step_tolerance = t->non_negative("step_tolerance", s.step_tolerance);
+    if (t->has("step_tolerance")) s.step_tolerance = t->non_negative("step_tolerance", 0.0);
     s.mass_scaling_step = t->non_negative("mass_scaling_step", 0.0);
-    s.implicit_viscosity = t->one_of("integrator", {"explicit", "imex"}, "explicit") == "imex";
+    if (t->has("integrator"))
+      s.integrator = t->one_of("integrator", {"explicit", "imex"}, "explicit") == "imex"
+                         ? ScenarioIntegrator::imex
+                         : ScenarioIntegrator::explicit_integrator;
     s.imex_tolerance = t->positive("imex_tolerance", s.imex_tolerance);
     if (s.imex_tolerance >= 1.0) t->fail("imex_tolerance", "expected a number in (0, 1)");
     s.imex_refactor_threshold =

@@ -251,11 +251,16 @@ StableStep estimate_stable_time_step(const Model& model, double safety, double c
                                      const IntegratorParams& integrator) {
   SG_VERIFY(safety > 0.0 && safety <= 1.0,
             "time step safety factor " << safety << " must be in (0, 1]");
+  return stable_time_step(model, estimate_body_frequencies(model, contact_stiffness), safety,
+                          integrator);
+}
+
+StableStep stable_time_step(const Model& model, const std::vector<double>& omega, double safety,
+                            const IntegratorParams& integrator) {
   StableStep best;
   best.dt = std::numeric_limits<double>::infinity();
   // Pick the minimum in body order (deterministic whatever the thread count).
   const int count = static_cast<int>(model.bodies.size());
-  const std::vector<double> omega = estimate_body_frequencies(model, contact_stiffness);
   for (int b = 0; b < count; ++b) {
     if (omega[static_cast<std::size_t>(b)] <= 0.0) continue;
     const double alpha = body_damping(model, b, integrator);

@@ -57,4 +57,9 @@ StableStep estimate_stable_time_step(const Model& model, double safety,
                                      double contact_stiffness = 0.0,
                                      const IntegratorParams& integrator = {});
 
+// The same from body frequencies already estimated (estimate_body_frequencies), so that two
+// integrators' steps can be compared at the cost of one estimate (solver/default_integrator.h).
+StableStep stable_time_step(const Model& model, const std::vector<double>& body_frequencies,
+                            double safety, const IntegratorParams& integrator);
+
 }  // namespace sg
