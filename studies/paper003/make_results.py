@@ -29,6 +29,9 @@ HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parent.parent
 CAMPAIGN = HERE / "campaign.toml"
 RUNS = ROOT / "out" / "campaigns" / "paper003" / "runs"
+# The controlled variation at 20 GPa: uniform 60 nm nodes instead of graded ones.
+VARIATION = HERE / "campaign-spacing.toml"
+VARIATION_RUNS = ROOT / "out" / "campaigns" / "paper003-spacing" / "runs"
 
 # Paper 003 Fig. 3 as its text gives it (§3): linear rise from ~0.14 (1e-4 GPa) to ~0.48
 # (1 GPa), a peak ~0.69 at 3 GPa, ~0.64 at 5 GPa, then 0.58-0.62 up to 20 GPa (std ~0.2 at
@@ -74,11 +77,11 @@ def stopped_series(run):
     return None
 
 
-def analyze_stopped(run, softgrain):
+def analyze_stopped(run, softgrain, runs):
     """A run stopped before its end (the machine's time): `softgrain analyze` refuses a
     partial series, so its rows, snapshots and scenario are copied to
     <campaign>/stopped/<id>/ as a run folder of what it wrote, and analysed there."""
-    copy = RUNS.parent / "stopped" / run.name
+    copy = runs.parent / "stopped" / run.name
     if not (copy / "analysis" / "summary.json").exists():
         if copy.exists():
             shutil.rmtree(copy)
@@ -95,17 +98,19 @@ def analyze_stopped(run, softgrain):
     return copy
 
 
-def collect(softgrain):
+def collect(softgrain, runs=RUNS, discretization="graded"):
     table = []
+    if not (runs.parent / "runs.txt").exists():
+        return table
     # The runs of the campaign as it stands (runs.txt), not older folders of another version.
-    for run_id in (RUNS.parent / "runs.txt").read_text().split():
-        run = RUNS / run_id
+    for run_id in (runs.parent / "runs.txt").read_text().split():
+        run = runs / run_id
         folder, stopped = run, False
         if not (run / "analysis" / "summary.json").exists():
             if stopped_series(run) is None or not (run / "sweep.failed").exists():
                 print(f"{run.name}: not run or still running, left out", file=sys.stderr)
                 continue
-            folder, stopped = analyze_stopped(run, softgrain), True
+            folder, stopped = analyze_stopped(run, softgrain, runs), True
         summary = json.loads((folder / "analysis" / "summary.json").read_text())
         rows = read_series(folder / "series.csv")
         cohesion = None
@@ -128,7 +133,8 @@ def collect(softgrain):
             "run": run.name,
             "cohesion_GPa": cohesion / 1e9,
             "sliding_um": (end - RAMP_END) * 100.0 * 1e6,  # V = 100 m/s
-            "folder": str(folder.relative_to(RUNS.parent)),
+            "discretization": discretization,
+            "folder": str(folder.relative_to(runs.parent)),
             "mu": quantity(summary, "mu"),
             "mu_std": quantity(summary, "mu_std"),
             "mu_error": quantity(summary, "mu_error"),
@@ -159,7 +165,7 @@ def write_csv(table, path):
     tmp.replace(path)
 
 
-def plot(table, path):
+def plot(table, variation, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -172,6 +178,10 @@ def plot(table, path):
     ax.errorbar([x + 0.3 for x in c], [r["mu_common"] for r in table],
                 yerr=[r["mu_common_std"] for r in table], fmt="s--", color="C2", capsize=3,
                 ms=4, label=f"softgrain: t in [{SETTLED * 1e9:.0f}, {COMMON_END * 1e9:.0f}] ns, all runs")
+    if variation:
+        ax.errorbar([r["cohesion_GPa"] - 0.3 for r in variation], [r["mu"] for r in variation],
+                    yerr=[r["mu_std"] for r in variation], fmt="D", color="C3", capsize=3, ms=5,
+                    label="softgrain, uniform 60 nm nodes (variation)")
     pc = [p[0] for p in PAPER]
     ax.plot(pc, [p[1] for p in PAPER], "k^-", label="paper 003 Fig. 3 (text values)")
     ax.fill_between(pc, [p[2] for p in PAPER], [p[3] for p in PAPER], color="k", alpha=0.12)
@@ -240,16 +250,19 @@ def main():
     args = parser.parse_args()
     if args.run:
         subprocess.run([args.softgrain, "sweep", str(CAMPAIGN)], check=True)
-    table = collect(str(pathlib.Path(args.softgrain).resolve()))
+        subprocess.run([args.softgrain, "sweep", str(VARIATION)], check=True)
+    softgrain = str(pathlib.Path(args.softgrain).resolve())
+    table = collect(softgrain)
     if not table:
         sys.exit("no finished run in " + str(RUNS))
-    write_csv(table, HERE / "results.csv")
-    plot(table, HERE / "mu_vs_cohesion.png")
+    variation = collect(softgrain, VARIATION_RUNS, "uniform 60 nm")
+    write_csv(table + variation, HERE / "results.csv")
+    plot(table, variation, HERE / "mu_vs_cohesion.png")
     plot_profiles(table, HERE / "profiles.png")
     if args.pictures:
         pictures(table, str(pathlib.Path(args.softgrain).resolve()))
-    for r in table:
-        print(f"{r['cohesion_GPa']:8.4g} GPa  sliding {r['sliding_um']:5.1f} um  mu {r['mu']:.3f} ± "
+    for r in table + variation:
+        print(f"{r['discretization']:14s}{r['cohesion_GPa']:8.4g} GPa  sliding {r['sliding_um']:5.1f} um  mu {r['mu']:.3f} ± "
               f"{r['mu_std']:.3f} (window {r['window_begin_s'] * 1e9:.0f}-{r['window_end_s'] * 1e9:.0f} ns)"
               f"  common {r['mu_common']:.3f} ± {r['mu_common_std']:.3f}  halves {r['mu_first_half']:.3f}"
               f" / {r['mu_second_half']:.3f}  phi {r['solid_fraction']:.3f}  min dt {r['min_step_s']:.3g}  sigma_n "
