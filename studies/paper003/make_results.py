@@ -4,9 +4,12 @@
 Zhang, Mollon et al., "Significance of third body rheology in friction" (§3, Fig. 3): mu
 against the grain/grain cohesion (tau = sigma) on the reduced paper 003 cell.
 
-    softgrain sweep studies/paper003/campaign.toml          the runs (or --run below)
-    /usr/bin/python3 studies/paper003/make_results.py       results.csv, mu_vs_cohesion.png
-    /usr/bin/python3 studies/paper003/make_results.py --run --softgrain build/app/softgrain
+    softgrain sweep studies/paper003/campaign.toml          the six runs
+    softgrain sweep studies/paper003/campaign-spacing.toml  the variation (uniform nodes, 20 GPa)
+    /usr/bin/python3 studies/paper003/make_results.py       results.csv, mu_vs_cohesion.png,
+                                                            profiles.png
+    /usr/bin/python3 studies/paper003/make_results.py --run --pictures
+                      (both sweeps first; then velocity_<c>GPa.png from each run's last snapshot)
 
 Per run it reads the analysis (analysis/summary.json: mu, mu_std over the steady window
 MSER-5 picked, the solid fraction, the activated third-body thickness) and, from series.csv,
@@ -20,8 +23,8 @@ import argparse
 import csv
 import json
 import math
-import shutil
 import pathlib
+import shutil
 import subprocess
 import sys
 
