@@ -20,8 +20,8 @@
 // the series of `softgrain run` with the same three values the same 6 ns mean is -17% over
 // [20, 26) ns and +8% over [24, 30) ns (the top's last approach, then the layer dilating as it
 // shears: the servo's bias c v of docs/scenario.md). It fails for a load that is not p L, a
-// layer that does not carry it, or a top still falling. Cost: 92 s on 2 threads on the 2-core
-// machine loaded by ~10 other processes; at its idle 2.7 ms per step on 2 threads, about 30 s.
+// layer that does not carry it, or a top still falling. Cost: 33.8 s in the full suite (ctest
+// -j2 on the 2-core machine, shared with other jobs); 92 s alone when ~10 other processes ran.
 #include <gtest/gtest.h>
 #include <omp.h>
 
