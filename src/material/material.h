@@ -64,8 +64,8 @@ enum class VolumetricFormulation {
 
 const char* to_string(VolumetricFormulation formulation);
 // Every formulation, for readers that parse a name by to_string (scenario/toml_reader.h).
-inline constexpr VolumetricFormulation kVolumetricFormulations[] = {
-    VolumetricFormulation::standard, VolumetricFormulation::fbar};
+inline constexpr VolumetricFormulation kVolumetricFormulations[] = {VolumetricFormulation::standard,
+                                                                    VolumetricFormulation::fbar};
 
 struct MaterialDef {
   std::string name;

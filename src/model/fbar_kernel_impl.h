@@ -91,8 +91,8 @@ BodyForceResult body_forces(const Model& model, const Body& body, const BodyArra
   const Rows rows(model.gauss_rows);
   const int points = body.gauss_end - body.gauss_begin;
   const int padded = (points + W - 1) / W * W;
-  const PointArrays arrays{
-      force_kernel_scratch(static_cast<std::size_t>(kPointArrays * padded), 2), padded};
+  const PointArrays arrays{force_kernel_scratch(static_cast<std::size_t>(kPointArrays * padded), 2),
+                           padded};
   const int patches = body.patch_count;
   double* patch_values = force_kernel_scratch(static_cast<std::size_t>(3 * patches), 3);
   double* patch_weight = patch_values;
@@ -129,7 +129,8 @@ BodyForceResult body_forces(const Model& model, const Body& body, const BodyArra
     const Chunk c{first, std::min(W, body.gauss_end - first)};
     const int o = first - body.gauss_begin;
     const Tensor2B f = arrays.load_tensor(kF, o);
-    const DoubleBatch scale = xsimd::sqrt(patch_lanes(c, o, patch, j_bar, 1.0) / arrays.load(kJ, o));
+    const DoubleBatch scale =
+        xsimd::sqrt(patch_lanes(c, o, patch, j_bar, 1.0) / arrays.load(kJ, o));
     const Tensor2B f_bar{scale * f.xx, scale * f.xy, scale * f.yx, scale * f.yy};
     const ElasticBatch elastic = elastic_response(material, f_bar);
     add_lanes(c, chunk_weights(model, c) * elastic.energy_density, result.elastic_energy);

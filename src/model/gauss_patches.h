@@ -7,8 +7,10 @@
 // is its median-dual cell, about 6 points over the triangles around it. That gives one
 // volumetric constraint per node against two displacement parameters, the ratio of the Q1/P0
 // element that does not lock; the Gauss points of one triangle as a patch would give one per
-// triangle, about two per node, one per parameter, and stayed stiff (docs/verification.md,
-// "Locking at large strain": +4.5% at nu = 0.495, D/8 against +0.5%).
+// triangle, about two per node, one per parameter, and cured half as much (docs/method.md
+// "Nearly incompressible grains: F-bar": at nu = 0.495, D/8, 3 points, a squeezed disc +5.6% /
+// +8.0% too stiff at 20% / 35% compression with triangle patches, +2.9% / +6.2% with node
+// patches, +12.1% / +10.5% standard).
 #include <vector>
 
 #include "meshfree/body_discretization.h"

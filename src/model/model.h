@@ -163,8 +163,8 @@ struct Model {
   std::vector<MaterialDef> material_defs;
   std::vector<MaterialParams> materials;
   NodeState nodes;
-  ShapeRows gauss_rows;                       // local node numbering per body
-  std::vector<double> gauss_weight;           // reference area of each Gauss point
+  ShapeRows gauss_rows;              // local node numbering per body
+  std::vector<double> gauss_weight;  // reference area of each Gauss point
   // Each Gauss point's F-bar patch, numbered from 0 in its body (model/gauss_patches.h); read
   // for materials with VolumetricFormulation::fbar only.
   std::vector<int> gauss_patch;

@@ -87,25 +87,25 @@ double estimate_max_frequency(const Model& model, BodyId body_id, int iterations
   for (std::size_t i = 0; i < n; ++i)
     max_inverse_root_mass = std::max(max_inverse_root_mass, std::sqrt(s.inverse_mass[o + i]));
   const double eps = 1e-7 * std::sqrt(body.reference_area) / max_inverse_root_mass;
-  return power_iteration_frequency(
-      model, body, iterations,
-      [&](const std::vector<double>& x, const std::vector<double>& y, std::vector<double>& kx,
-          std::vector<double>& ky) {
-        for (std::size_t i = 0; i < n; ++i) {
-          const double r = std::sqrt(s.inverse_mass[o + i]);
-          ux_p[i] = ux[i] + eps * r * x[i];
-          uy_p[i] = uy[i] + eps * r * y[i];
-          fx[i] = 0.0;
-          fy[i] = 0.0;
-        }
-        add_body_internal_forces(model, body_id, ux_p.data(), uy_p.data(), zero.data(),
-                                 zero.data(), fx.data(), fy.data(), false);
-        // K x = -(f(u + eps x) - f(u)) / eps
-        for (std::size_t i = 0; i < n; ++i) {
-          kx[i] = -(fx[i] - f0x[i]) / eps;
-          ky[i] = -(fy[i] - f0y[i]) / eps;
-        }
-      });
+  return power_iteration_frequency(model, body, iterations,
+                                   [&](const std::vector<double>& x, const std::vector<double>& y,
+                                       std::vector<double>& kx, std::vector<double>& ky) {
+                                     for (std::size_t i = 0; i < n; ++i) {
+                                       const double r = std::sqrt(s.inverse_mass[o + i]);
+                                       ux_p[i] = ux[i] + eps * r * x[i];
+                                       uy_p[i] = uy[i] + eps * r * y[i];
+                                       fx[i] = 0.0;
+                                       fy[i] = 0.0;
+                                     }
+                                     add_body_internal_forces(model, body_id, ux_p.data(),
+                                                              uy_p.data(), zero.data(), zero.data(),
+                                                              fx.data(), fy.data(), false);
+                                     // K x = -(f(u + eps x) - f(u)) / eps
+                                     for (std::size_t i = 0; i < n; ++i) {
+                                       kx[i] = -(fx[i] - f0x[i]) / eps;
+                                       ky[i] = -(fy[i] - f0y[i]) / eps;
+                                     }
+                                   });
 }
 
 double estimate_viscous_frequency(const Model& model, BodyId body_id, int iterations) {
@@ -120,23 +120,23 @@ double estimate_viscous_frequency(const Model& model, BodyId body_id, int iterat
   const Mat2 rotation = material.damping_model == DampingModel::corotational
                             ? body_rotation(model, body, ux, uy).matrix()
                             : Mat2::Identity();
-  return power_iteration_frequency(
-      model, body, iterations,
-      [&](const std::vector<double>& x, const std::vector<double>& y, std::vector<double>& kx,
-          std::vector<double>& ky) {
-        std::vector<double> rx(x.size()), ry(y.size());
-        for (std::size_t i = 0; i < x.size(); ++i) {
-          const double r = std::sqrt(model.nodes.inverse_mass[o + i]);
-          rx[i] = r * x[i];
-          ry[i] = r * y[i];
-        }
-        apply_viscous_operator(model, body_id, gradients, rotation, rx.data(), ry.data(),
-                               kx.data(), ky.data());
-        for (std::size_t i = 0; i < kx.size(); ++i) {
-          kx[i] /= material.damping;
-          ky[i] /= material.damping;
-        }
-      });
+  return power_iteration_frequency(model, body, iterations,
+                                   [&](const std::vector<double>& x, const std::vector<double>& y,
+                                       std::vector<double>& kx, std::vector<double>& ky) {
+                                     std::vector<double> rx(x.size()), ry(y.size());
+                                     for (std::size_t i = 0; i < x.size(); ++i) {
+                                       const double r = std::sqrt(model.nodes.inverse_mass[o + i]);
+                                       rx[i] = r * x[i];
+                                       ry[i] = r * y[i];
+                                     }
+                                     apply_viscous_operator(model, body_id, gradients, rotation,
+                                                            rx.data(), ry.data(), kx.data(),
+                                                            ky.data());
+                                     for (std::size_t i = 0; i < kx.size(); ++i) {
+                                       kx[i] /= material.damping;
+                                       ky[i] /= material.damping;
+                                     }
+                                   });
 }
 
 double wave_speed_frequency_bound(const Model& model, BodyId body_id) {

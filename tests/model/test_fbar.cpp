@@ -101,8 +101,8 @@ TEST(FBar, PatchesAreTheGaussPointsNearestToEachNode) {
     // With 3 points per triangle a patch is one point per triangle around the node (a median
     // dual cell): 6 on average in a triangulation of the plane.
     const double mean = static_cast<double>(body.gauss_end - body.gauss_begin) / body.patch_count;
-    std::printf("%d Gauss points: %d patches of %.2f points on average (%d to %d)\n",
-                gauss_points, body.patch_count, mean, *std::min_element(size.begin(), size.end()),
+    std::printf("%d Gauss points: %d patches of %.2f points on average (%d to %d)\n", gauss_points,
+                body.patch_count, mean, *std::min_element(size.begin(), size.end()),
                 *std::max_element(size.begin(), size.end()));
     EXPECT_GT(mean, gauss_points == 3 ? 4.0 : 8.0);
     EXPECT_GE(*std::min_element(size.begin(), size.end()), 1);
@@ -258,8 +258,8 @@ TEST(FBar, EveryKernelVersionAndThreadCountGivesTheSameBits) {
         const auto o = static_cast<std::size_t>(model.bodies[b].node_begin);
         const BodyForceResult r = add_body_internal_forces(
             model, static_cast<BodyId>(b), n.ux.data() + o, n.uy.data() + o, n.vx.data() + o,
-            n.vy.data() + o, out.data() + o, out.data() + n.size() + o,
-            true, out.data() + 2 * n.size() + o, out.data() + 3 * n.size() + o, kernel);
+            n.vy.data() + o, out.data() + o, out.data() + n.size() + o, true,
+            out.data() + 2 * n.size() + o, out.data() + 3 * n.size() + o, kernel);
         energy += r.elastic_energy;
         power += r.damping_power;
       }

@@ -18,8 +18,8 @@
 namespace sg {
 namespace {
 
-MaterialDef fbar_material(double damping = 0.0, VolumetricFormulation volumetric =
-                                                     VolumetricFormulation::fbar) {
+MaterialDef fbar_material(double damping = 0.0,
+                          VolumetricFormulation volumetric = VolumetricFormulation::fbar) {
   MaterialDef m = scenes::elastic_material(MaterialLaw::neo_hookean, damping, 0.495);
   m.volumetric = volumetric;
   return m;
@@ -51,9 +51,10 @@ double undamped_energy_drift(double fraction,
     if (s == 0) initial = total;
     worst = std::max(worst, std::abs(total - initial) / initial);
   }
-  std::printf("%s, undamped at %.2f of the stable step: %ld steps of %.4g, max energy error "
-              "%.3e\n",
-              to_string(volumetric), fraction, steps, stable.dt, worst);
+  std::printf(
+      "%s, undamped at %.2f of the stable step: %ld steps of %.4g, max energy error "
+      "%.3e\n",
+      to_string(volumetric), fraction, steps, stable.dt, worst);
   EXPECT_GT(initial, 0.0);
   return worst;
 }
@@ -102,15 +103,15 @@ double growth(const Model& model, double dt) {
 TEST(FBarDynamics, StableStepEstimateSeparatesStableFromUnstable) {
   for (double alpha : {0.0, 0.02}) {
     const Model model = scenes::single_disc(fbar_material(alpha), 0.5, 0.1);
-    const Model standard = scenes::single_disc(
-        fbar_material(alpha, VolumetricFormulation::standard), 0.5, 0.1);
+    const Model standard =
+        scenes::single_disc(fbar_material(alpha, VolumetricFormulation::standard), 0.5, 0.1);
     const double fbar_omega = estimate_max_frequency(model, 0);
     const double standard_omega = estimate_max_frequency(standard, 0);
     const StableStep step = estimate_stable_time_step(model, 1.0);
-    std::printf("alpha %.2f: omega F-bar %.4g, standard %.4g; stable step F-bar %.4g, standard "
-                "%.4g\n",
-                alpha, fbar_omega, standard_omega, step.dt,
-                estimate_stable_time_step(standard, 1.0).dt);
+    std::printf(
+        "alpha %.2f: omega F-bar %.4g, standard %.4g; stable step F-bar %.4g, standard "
+        "%.4g\n",
+        alpha, fbar_omega, standard_omega, step.dt, estimate_stable_time_step(standard, 1.0).dt);
     // F-bar relaxes the volumetric constraint: its highest frequency is lower.
     EXPECT_LT(fbar_omega, standard_omega);
     if (alpha > 0.0) {
