@@ -14,6 +14,12 @@ finer ones for the reference) x 3 and 6 Gauss points per triangle.
     /usr/bin/python3 studies/locking/locking_study.py markdown # the table of verification.md
     /usr/bin/python3 studies/locking/locking_study.py scenario # rewrite the test's scenario
 
+The F-bar option (issue #31 item 3, `volumetric = "fbar"`): the cases named *-fbar, at nu = 0.3,
+0.495, 0.499, D/8, 12, 16, both rules, and D/48 (3 points, nu = 0.495 and 0.499) as F-bar's own
+reference; their errors are against the standard D/48 run of the same nu and rule (and, in
+error_*_own_reference_percent, against the F-bar D/48 run). `run --only fbar` runs them alone:
+the standard rows of results.csv whose runs are not in --runs are kept as they are.
+
 Options: --bin (default build/app/softgrain), --runs (the folder of runs this script owns,
 default out/locking-study/, which git ignores), --only SUBSTRING (cases whose name contains
 it), --rate-check (also the case run at half the loading rate). A case whose series.csv exists
