@@ -40,7 +40,7 @@ std::string fbar_cell(const std::string& name, bool imex, double damping, double
   c.poisson = 0.495;
   c.damping = damping;
   c.duration = duration;
-  if (imex) c.extra_time = "integrator = \"imex\"\n";
+  c.extra_time = imex ? "integrator = \"imex\"\n" : "integrator = \"explicit\"\n";
   c.checkpoint_period = duration / 3.0;
   c.compaction_time = 0.3 * duration;
   c.velocity = 2.0;
