@@ -1,5 +1,6 @@
 // Internal forces + time update on sets of ~100-node soft discs (the papers' grains):
-// ~10,000 and ~100,000 field nodes, 1 and 2 threads. Reports node-steps per second.
+// ~10,000 and ~100,000 field nodes, 1 and 2 threads, standard and F-bar elasticity (fbar:1,
+// `volumetric = "fbar"`). Reports node-steps per second.
 //
 //   build/bench/bench_softgrain --benchmark_filter=InternalForces --benchmark_repetitions=5
 //       --benchmark_report_aggregates_only=true
@@ -17,8 +18,10 @@ namespace {
 void InternalForces(benchmark::State& state) {
   const int discs = static_cast<int>(state.range(0));
   const int threads = static_cast<int>(state.range(1));
+  const bool fbar = state.range(2) != 0;
   omp_set_num_threads(threads);
-  Model model = bench::disc_set(discs);
+  Model model =
+      bench::disc_set(discs, fbar ? VolumetricFormulation::fbar : VolumetricFormulation::standard);
   Stepper solver(model);
   const double dt = estimate_stable_time_step(model, 0.9).dt;
   solver.profile() = StepProfile{};
@@ -44,8 +47,8 @@ void InternalForces(benchmark::State& state) {
 }
 
 BENCHMARK(InternalForces)
-    ->ArgsProduct({{100, 1000}, {1, 2}})
-    ->ArgNames({"discs", "threads"})
+    ->ArgsProduct({{100, 1000}, {1, 2}, {0, 1}})
+    ->ArgNames({"discs", "threads", "fbar"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(1.0);

@@ -1,7 +1,8 @@
 #pragma once
 // The benchmarks' set of ~100-node soft discs (the papers' grains), stretched and spinning:
 // 103 field nodes and 519 Gauss points per disc of radius 0.5 at h = 0.1 (3 Gauss points per
-// triangle), neo-Hookean, nu = 0.495, objective damping alpha = 0.02.
+// triangle), neo-Hookean, nu = 0.495, objective damping alpha = 0.02; standard or F-bar
+// (material.h VolumetricFormulation).
 #include <cmath>
 #include <string>
 
@@ -11,12 +12,14 @@
 
 namespace sg::bench {
 
-inline Model disc_set(int discs) {
+inline Model disc_set(int discs,
+                      VolumetricFormulation volumetric = VolumetricFormulation::standard) {
   MaterialDef m;
   m.name = "soft";
   m.young = 10.0;
   m.poisson = 0.495;
   m.damping = 0.02;
+  m.volumetric = volumetric;
   DiscretizationParams p;
   p.mesh.spacing = 0.1;  // 117 field nodes per disc of radius 0.5 (the papers: 100-150)
   const BodyDiscretization disc =

@@ -188,6 +188,7 @@ CheckpointFingerprint fingerprint_of(const Model& model, std::span<const double>
     w(m.damping);
     // Non-default damping models only, so that the fingerprints of earlier runs are unchanged.
     if (m.damping_model != DampingModel::objective) w(m.damping_model);
+    if (m.volumetric != VolumetricFormulation::standard) w(m.volumetric);
   }
   w(model.nodes.ref_y);
   w(model.nodes.mass);

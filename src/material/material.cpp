@@ -18,6 +18,16 @@ const char* to_string(DampingModel model) {
   return "?";
 }
 
+const char* to_string(VolumetricFormulation formulation) {
+  switch (formulation) {
+    case VolumetricFormulation::standard:
+      return "standard";
+    case VolumetricFormulation::fbar:
+      return "fbar";
+  }
+  return "?";
+}
+
 const char* to_string(MaterialLaw law) {
   switch (law) {
     case MaterialLaw::neo_hookean:
@@ -51,6 +61,7 @@ MaterialParams make_material_params(const MaterialDef& def) {
   m.density = def.density;
   m.damping = def.damping;
   m.damping_model = def.damping_model;
+  m.volumetric = def.volumetric;
   return m;
 }
 

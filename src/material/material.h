@@ -49,6 +49,24 @@ const char* to_string(DampingModel model);
 inline constexpr DampingModel kDampingModels[] = {
     DampingModel::objective, DampingModel::corotational, DampingModel::reference_stiffness};
 
+// How the volumetric part of the deformation enters the elastic energy (docs/method.md
+// "Nearly incompressible grains: F-bar").
+enum class VolumetricFormulation {
+  // W(F) at every Gauss point (default).
+  standard,
+  // W(F_bar) with F_bar = (J_bar / J)^(1/2) F, J_bar the weighted mean of det F over a patch of
+  // Gauss points (the points nearest to one node: model/gauss_patches.h): one volumetric
+  // constraint per node instead of one per Gauss point, against the locking of nearly
+  // incompressible grains (de Souza Neto, Peric, Dutko & Owen 1996, Int. J. Solids Struct.
+  // 33:3277, adapted to plane strain). The viscous stress keeps F (model/force_kernel_impl.h).
+  fbar,
+};
+
+const char* to_string(VolumetricFormulation formulation);
+// Every formulation, for readers that parse a name by to_string (scenario/toml_reader.h).
+inline constexpr VolumetricFormulation kVolumetricFormulations[] = {VolumetricFormulation::standard,
+                                                                    VolumetricFormulation::fbar};
+
 struct MaterialDef {
   std::string name;
   MaterialLaw law = MaterialLaw::neo_hookean;
@@ -57,6 +75,7 @@ struct MaterialDef {
   double density = 1.0;  // rho (mass per unit area in 2D)
   double damping = 0.0;  // alpha, stiffness-proportional Rayleigh coefficient (time units)
   DampingModel damping_model = DampingModel::objective;
+  VolumetricFormulation volumetric = VolumetricFormulation::standard;
 };
 
 // Throws sg::Error naming the material and the bad value.
@@ -70,6 +89,7 @@ struct MaterialParams {
   double density = 1.0;
   double damping = 0.0;  // alpha
   DampingModel damping_model = DampingModel::objective;
+  VolumetricFormulation volumetric = VolumetricFormulation::standard;
 };
 
 MaterialParams make_material_params(const MaterialDef& def);

@@ -14,6 +14,14 @@ DiscretizationParams with_spacing(DiscretizationParams params, const NodeSpacing
   return params;
 }
 
+int nearest_vertex(const std::array<int, 3>& triangle, const std::array<double, 3>& point) {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < 3; ++i)
+    if (point[i] > point[best] || (point[i] == point[best] && triangle[i] < triangle[best]))
+      best = i;
+  return triangle[best];
+}
+
 BodyDiscretization discretize_mesh(DomainMesh mesh, const DiscretizationParams& params,
                                    const std::string& body_name) {
   BodyDiscretization d;
@@ -36,6 +44,7 @@ BodyDiscretization discretize_mesh(DomainMesh mesh, const DiscretizationParams& 
       mls.evaluate(x, d.gauss_rows);
       d.gauss_weight.push_back(rule.weight[q] * area);
       d.gauss_position.push_back(x);
+      d.gauss_node.push_back(nearest_vertex(tri, l));
     }
   }
   // Contour nodes get the contact-consistent row of meshfree/contour_rows.h, the others

@@ -3,6 +3,7 @@
 // points with their MLS rows, the MLS rows at the nodes themselves, and the lumped
 // nodal volumes. Everything is in the body's reference configuration and local numbering;
 // the model copies it into global arrays.
+#include <array>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,9 @@ struct BodyDiscretization {
   ShapeRows gauss_rows;              // one row per Gauss point
   std::vector<double> gauss_weight;  // quadrature weight (area), sums to the body area
   std::vector<Vec2> gauss_position;  // reference position
+  // The node of its triangle nearest to each Gauss point (the largest barycentric coordinate;
+  // the lowest node index on ties): the point's F-bar patch (model/gauss_patches.h).
+  std::vector<int> gauss_node;
   // One row per node, evaluated at the node's reference position: the physical position of
   // node I is X_I + sum_J N_J(X_I) u_J (MLS does not interpolate), and a force applied there
   // is spread back with the same N_J(X_I).
@@ -48,6 +52,10 @@ BodyDiscretization discretize_body(const Polygon& boundary, const Discretization
                                    const std::string& body_name);
 
 // Same from an existing node set and triangulation (tests, imported meshes).
+// The vertex of `triangle` with the largest barycentric coordinate of `point` (the lowest node
+// index among equal ones): BodyDiscretization::gauss_node.
+int nearest_vertex(const std::array<int, 3>& triangle, const std::array<double, 3>& point);
+
 BodyDiscretization discretize_mesh(DomainMesh mesh, const DiscretizationParams& params,
                                    const std::string& body_name);
 

@@ -302,6 +302,7 @@ PeriodicStripDiscretization discretize_periodic_strip(const Polygon& surface,
       append_mapped_row(scratch, 0, n, radius, d.gauss_rows, strip.gauss_image, x, body_name);
       d.gauss_weight.push_back(rule.weight[q] * area);
       d.gauss_position.push_back(x);
+      d.gauss_node.push_back(nearest_vertex(tri, l));
     }
   };
   for (const auto& tri : triangles)

@@ -65,7 +65,8 @@ const ForceKernel& force_kernel();
 // the default); throws sg::Error naming the variable and the values expected.
 const ForceKernel& force_kernel_named(const char* name);
 
-// Per-thread scratch of the kernels: `doubles` values aligned on 64 bytes, slot 0 or 1; kept
+// Per-thread scratch of the kernels: `doubles` values aligned on 64 bytes, slot 0 to 3 (0, 1:
+// node buffers; 2, 3: the F-bar kernel's per-point and per-patch values); kept
 // (and grown) from call to call.
 double* force_kernel_scratch(std::size_t doubles, int slot);
 

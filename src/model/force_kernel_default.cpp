@@ -60,7 +60,7 @@ const ForceKernel& force_kernel() {
 
 double* force_kernel_scratch(std::size_t doubles, int slot) {
   // std::vector's memory is 16-byte aligned; 8 spare doubles leave room to align on 64.
-  thread_local std::array<std::vector<double>, 2> buffers;
+  thread_local std::array<std::vector<double>, 4> buffers;
   std::vector<double>& b = buffers[static_cast<std::size_t>(slot)];
   if (b.size() < doubles + 8) b.resize(doubles + 8);
   void* p = b.data();

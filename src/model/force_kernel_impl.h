@@ -7,6 +7,7 @@
 #include <array>
 
 #include "material/material_batch.h"
+#include "model/fbar_kernel_impl.h"
 #include "model/force_kernel.h"
 #include "model/row_kernel.h"
 
@@ -80,6 +81,11 @@ BodyForceResult body_forces(const Model& model, const Body& body, const BodyArra
 
 inline BodyForceResult forces(const Model& model, const Body& body, const BodyArrays& a,
                               bool damped, const Mat2& rotation) {
+  if (model.material(body.material).volumetric == VolumetricFormulation::fbar) {
+    if (!damped) return fbar_kernel::body_forces<2, 2>(model, body, a, rotation);
+    if (a.viscous_fx == nullptr) return fbar_kernel::body_forces<4, 2>(model, body, a, rotation);
+    return fbar_kernel::body_forces<4, 4>(model, body, a, rotation);
+  }
   if (!damped) return body_forces<2, 2>(model, body, a, rotation);
   if (a.viscous_fx == nullptr) return body_forces<4, 2>(model, body, a, rotation);
   return body_forces<4, 4>(model, body, a, rotation);

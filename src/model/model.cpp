@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "model/gauss_patches.h"
 
 namespace sg {
 
@@ -85,6 +86,9 @@ BodyId Model::add_deformable_body(const std::string& name, const BodyDiscretizat
     }
   gauss_rows.append(d.gauss_rows);
   gauss_weight.insert(gauss_weight.end(), d.gauss_weight.begin(), d.gauss_weight.end());
+  const GaussPatches patches = gauss_patches(d);
+  gauss_patch.insert(gauss_patch.end(), patches.patch.begin(), patches.patch.end());
+  body.patch_count = patches.count;
   node_rows.append(d.node_rows);
   for (const auto& t : d.mesh.triangles)
     triangles.push_back({t[0] + body.node_begin, t[1] + body.node_begin, t[2] + body.node_begin});

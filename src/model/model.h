@@ -44,6 +44,8 @@ struct Body {
   int boundary_end = 0;              // [node_begin, boundary_end): contour nodes, CCW
   int gauss_begin = 0, gauss_end = 0;
   int triangle_begin = 0, triangle_end = 0;
+  // F-bar patches of its Gauss points (Model::gauss_patch, model/gauss_patches.h).
+  int patch_count = 0;
   // Contour points of every body, concatenated (Model::contour_*): for a deformable body,
   // contour point k is boundary node node_begin + (k - contour_begin); for a rigid body the
   // points follow the rigid motion.
@@ -161,8 +163,11 @@ struct Model {
   std::vector<MaterialDef> material_defs;
   std::vector<MaterialParams> materials;
   NodeState nodes;
-  ShapeRows gauss_rows;                       // local node numbering per body
-  std::vector<double> gauss_weight;           // reference area of each Gauss point
+  ShapeRows gauss_rows;              // local node numbering per body
+  std::vector<double> gauss_weight;  // reference area of each Gauss point
+  // Each Gauss point's F-bar patch, numbered from 0 in its body (model/gauss_patches.h); read
+  // for materials with VolumetricFormulation::fbar only.
+  std::vector<int> gauss_patch;
   ShapeRows node_rows;                        // row of each node at its own reference position
   std::vector<std::array<int, 3>> triangles;  // global node numbering
   // Contour points of all bodies (see Body::contour_begin). For rigid bodies: the offset of

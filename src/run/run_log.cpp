@@ -43,6 +43,9 @@ void write_parameters(std::ostream& out, const ScenarioDef& s, const IntegratorC
         << "\"\nyoung = " << m.young << "\npoisson = " << m.poisson << "\ndensity = " << m.density
         << "\ndamping = " << m.damping << "\ndamping_model = \"" << to_string(m.damping_model)
         << "\"\n";
+    // Written only when set (issue #31), so a standard run's log is as it was.
+    if (m.volumetric != VolumetricFormulation::standard)
+      out << "volumetric = \"" << to_string(m.volumetric) << "\"\n";
     // A material's own node spacings, when they differ from [discretization]'s.
     if (i < s.material_spacing.size()) {
       const NodeSpacing& own = s.material_spacing[i];

@@ -18,7 +18,7 @@ namespace {
 
 MaterialDef read_material(const TomlReader& t) {
   t.reject_unknown_keys({"name", "law", "young", "poisson", "density", "damping", "damping_model",
-                         "node_spacing", "interior_spacing"});
+                         "volumetric", "node_spacing", "interior_spacing"});
   MaterialDef m;
   m.name = t.string("name");
   m.law = t.named_value("law", kMaterialLaws, MaterialLaw::neo_hookean);
@@ -29,6 +29,8 @@ MaterialDef read_material(const TomlReader& t) {
   m.density = t.positive("density", 1.0);
   m.damping = t.non_negative("damping", 0.0);
   m.damping_model = t.named_value("damping_model", kDampingModels, DampingModel::objective);
+  m.volumetric =
+      t.named_value("volumetric", kVolumetricFormulations, VolumetricFormulation::standard);
   return m;
 }
 

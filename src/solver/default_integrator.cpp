@@ -37,6 +37,14 @@ std::optional<DampingModel> costliest_implicit_model(const Model& model) {
   return costliest;
 }
 
+bool has_damped_fbar_body(const Model& model) {
+  for (BodyId b = 0; b < static_cast<BodyId>(model.bodies.size()); ++b)
+    if (model.body(b).kind == BodyKind::deformable && model.is_damped(b) &&
+        model.material_of(b).volumetric == VolumetricFormulation::fbar)
+      return true;
+  return false;
+}
+
 IntegratorChoice chosen(const IntegratorParams& params, double step_tolerance,
                         const std::string& reason) {
   IntegratorChoice c;
@@ -60,9 +68,15 @@ IntegratorChoice choose_default_integrator(const Model& model, double safety,
   if (fixed_step > 0.0)
     return chosen(explicit_integrator, step_tolerance,
                   "fixed_step is set, and imex would not make it larger");
-  const std::vector<double> omega = estimate_body_frequencies(model, contact_stiffness);
+  // The frequencies depend on the integrator only through F-bar bodies whose viscosity is
+  // explicit (stable_time_step.h): estimated twice only when there are such bodies.
+  const std::vector<double> omega =
+      estimate_body_frequencies(model, contact_stiffness, explicit_integrator);
+  const std::vector<double> omega_imex =
+      has_damped_fbar_body(model) ? estimate_body_frequencies(model, contact_stiffness, imex)
+                                  : omega;
   const StableStep damped = stable_time_step(model, omega, safety, explicit_integrator);
-  const StableStep implicit = stable_time_step(model, omega, safety, imex);
+  const StableStep implicit = stable_time_step(model, omega_imex, safety, imex);
   const double gain = implicit.dt / damped.dt, cost = imex_step_cost(*costliest);
   const bool faster = gain > cost;
   std::ostringstream why;

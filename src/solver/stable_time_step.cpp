@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/parallel.h"
 #include "model/internal_forces.h"
+#include "model/kinematics.h"
 #include "solver/implicit_viscosity.h"
 
 namespace sg {
@@ -16,6 +17,55 @@ double critical_time_step(double omega, double alpha) {
   const double xi = 0.5 * alpha * omega;
   return 2.0 / omega * (std::sqrt(1.0 + xi * xi) - xi);
 }
+
+namespace {
+
+// sqrt(lambda_max(M^-1/2 K M^-1/2)) of one body by power iteration, `apply_k(x, y, kx, ky)`
+// setting (kx, ky) = K M^-1/2 (x, y) on the body's parameters.
+template <class ApplyK>
+double power_iteration_frequency(const Model& model, const Body& body, int iterations,
+                                 ApplyK&& apply_k) {
+  const auto n = static_cast<std::size_t>(body.node_count());
+  const auto o = static_cast<std::size_t>(body.node_begin);
+  const NodeState& s = model.nodes;
+  std::vector<double> px(n), py(n), kx(n), ky(n);
+  // Start vector: a deterministic alternating pattern, rich in high frequencies.
+  for (std::size_t i = 0; i < n; ++i) {
+    px[i] = static_cast<double>((i * 7919) % 13) / 13.0 - 0.5;
+    py[i] = static_cast<double>((i * 104729) % 17) / 17.0 - 0.5;
+  }
+  // Iterate on y = M^-1/2 K M^-1/2 x (symmetric), so the Rayleigh quotient is an eigenvalue bound.
+  double lambda = 0.0;
+  for (int it = 0; it < iterations; ++it) {
+    double norm = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+      norm += px[i] * px[i] + py[i] * py[i];
+    norm = std::sqrt(norm);
+    if (norm == 0.0) break;
+    for (std::size_t i = 0; i < n; ++i) {
+      px[i] /= norm;
+      py[i] /= norm;
+    }
+    apply_k(px, py, kx, ky);
+    double rayleigh = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double r = std::sqrt(s.inverse_mass[o + i]);
+      const double x = kx[i] * r, y = ky[i] * r;
+      rayleigh += x * px[i] + y * py[i];
+      px[i] = x;
+      py[i] = y;
+    }
+    lambda = rayleigh;
+  }
+  SG_VERIFY(lambda > 0.0 && std::isfinite(lambda),
+            "body '" << body.name << "': cannot estimate its highest frequency (got " << lambda
+                     << "): expected a positive, finite value; the body is inverted, or its "
+                        "stiffness over its mass (young over density) is beyond what the "
+                        "arithmetic holds");
+  return std::sqrt(lambda);
+}
+
+}  // namespace
 
 double estimate_max_frequency(const Model& model, BodyId body_id, int iterations) {
   const Body& body = model.body(body_id);
@@ -27,16 +77,9 @@ double estimate_max_frequency(const Model& model, BodyId body_id, int iterations
   std::vector<double> uy(s.uy.begin() + static_cast<long>(o),
                          s.uy.begin() + static_cast<long>(o + n));
   const std::vector<double> zero(n, 0.0);
-  std::vector<double> f0x(n, 0.0), f0y(n, 0.0), fx(n), fy(n), px(n), py(n), ux_p(n), uy_p(n);
+  std::vector<double> f0x(n, 0.0), f0y(n, 0.0), fx(n), fy(n), ux_p(n), uy_p(n);
   add_body_internal_forces(model, body_id, ux.data(), uy.data(), zero.data(), zero.data(),
                            f0x.data(), f0y.data(), false);
-  // Start vector: a deterministic alternating pattern, rich in high frequencies.
-  for (std::size_t i = 0; i < n; ++i) {
-    px[i] = static_cast<double>((i * 7919) % 13) / 13.0 - 0.5;
-    py[i] = static_cast<double>((i * 104729) % 17) / 17.0 - 0.5;
-  }
-  // Iterate on y = M^-1/2 K M^-1/2 x (symmetric), so the Rayleigh quotient is an eigenvalue bound.
-  double lambda = 0.0;
   // The displacement probe is eps * M^-1/2 x with |x| = 1: scaled so that its largest nodal
   // component is 1e-7 of the body size (linear regime) whatever the units of the masses (in SI
   // a node weighs ~1e-16 kg and M^-1/2 alone would move it by light years).
@@ -44,40 +87,56 @@ double estimate_max_frequency(const Model& model, BodyId body_id, int iterations
   for (std::size_t i = 0; i < n; ++i)
     max_inverse_root_mass = std::max(max_inverse_root_mass, std::sqrt(s.inverse_mass[o + i]));
   const double eps = 1e-7 * std::sqrt(body.reference_area) / max_inverse_root_mass;
-  for (int it = 0; it < iterations; ++it) {
-    double norm = 0.0;
-    for (std::size_t i = 0; i < n; ++i)
-      norm += px[i] * px[i] + py[i] * py[i];
-    norm = std::sqrt(norm);
-    if (norm == 0.0) break;
-    for (std::size_t i = 0; i < n; ++i) {
-      px[i] /= norm;
-      py[i] /= norm;
-      const double r = std::sqrt(s.inverse_mass[o + i]);
-      ux_p[i] = ux[i] + eps * r * px[i];
-      uy_p[i] = uy[i] + eps * r * py[i];
-      fx[i] = 0.0;
-      fy[i] = 0.0;
-    }
-    add_body_internal_forces(model, body_id, ux_p.data(), uy_p.data(), zero.data(), zero.data(),
-                             fx.data(), fy.data(), false);
-    double rayleigh = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double r = std::sqrt(s.inverse_mass[o + i]);
-      // K x = -(f(u + eps x) - f(u)) / eps
-      const double kx = -(fx[i] - f0x[i]) / eps * r, ky = -(fy[i] - f0y[i]) / eps * r;
-      rayleigh += kx * px[i] + ky * py[i];
-      px[i] = kx;
-      py[i] = ky;
-    }
-    lambda = rayleigh;
-  }
-  SG_VERIFY(lambda > 0.0 && std::isfinite(lambda),
-            "body '" << body.name << "': cannot estimate its highest frequency (got " << lambda
-                     << "): expected a positive, finite value; the body is inverted, or its "
-                        "stiffness over its mass (young over density) is beyond what the "
-                        "arithmetic holds");
-  return std::sqrt(lambda);
+  return power_iteration_frequency(model, body, iterations,
+                                   [&](const std::vector<double>& x, const std::vector<double>& y,
+                                       std::vector<double>& kx, std::vector<double>& ky) {
+                                     for (std::size_t i = 0; i < n; ++i) {
+                                       const double r = std::sqrt(s.inverse_mass[o + i]);
+                                       ux_p[i] = ux[i] + eps * r * x[i];
+                                       uy_p[i] = uy[i] + eps * r * y[i];
+                                       fx[i] = 0.0;
+                                       fy[i] = 0.0;
+                                     }
+                                     add_body_internal_forces(model, body_id, ux_p.data(),
+                                                              uy_p.data(), zero.data(), zero.data(),
+                                                              fx.data(), fy.data(), false);
+                                     // K x = -(f(u + eps x) - f(u)) / eps
+                                     for (std::size_t i = 0; i < n; ++i) {
+                                       kx[i] = -(fx[i] - f0x[i]) / eps;
+                                       ky[i] = -(fy[i] - f0y[i]) / eps;
+                                     }
+                                   });
+}
+
+double estimate_viscous_frequency(const Model& model, BodyId body_id, int iterations) {
+  const Body& body = model.body(body_id);
+  const MaterialParams& material = model.material_of(body_id);
+  SG_VERIFY(model.is_damped(body_id), "body '" << body.name << "' has no bulk damping");
+  const auto o = static_cast<std::size_t>(body.node_begin);
+  const double* ux = model.nodes.ux.data() + o;
+  const double* uy = model.nodes.uy.data() + o;
+  std::vector<Mat2> gradients;
+  body_deformation_gradients(model, body_id, ux, uy, gradients);
+  const Mat2 rotation = material.damping_model == DampingModel::corotational
+                            ? body_rotation(model, body, ux, uy).matrix()
+                            : Mat2::Identity();
+  return power_iteration_frequency(model, body, iterations,
+                                   [&](const std::vector<double>& x, const std::vector<double>& y,
+                                       std::vector<double>& kx, std::vector<double>& ky) {
+                                     std::vector<double> rx(x.size()), ry(y.size());
+                                     for (std::size_t i = 0; i < x.size(); ++i) {
+                                       const double r = std::sqrt(model.nodes.inverse_mass[o + i]);
+                                       rx[i] = r * x[i];
+                                       ry[i] = r * y[i];
+                                     }
+                                     apply_viscous_operator(model, body_id, gradients, rotation,
+                                                            rx.data(), ry.data(), kx.data(),
+                                                            ky.data());
+                                     for (std::size_t i = 0; i < kx.size(); ++i) {
+                                       kx[i] /= material.damping;
+                                       ky[i] /= material.damping;
+                                     }
+                                   });
 }
 
 double wave_speed_frequency_bound(const Model& model, BodyId body_id) {
@@ -191,14 +250,22 @@ double contact_frequency(const Model& model, const Body& body, double k) {
 
 }  // namespace
 
-std::vector<double> estimate_body_frequencies(const Model& model, double contact_stiffness) {
+std::vector<double> estimate_body_frequencies(const Model& model, double contact_stiffness,
+                                              const IntegratorParams& integrator) {
   // Bodies are independent: estimate in parallel, each into its own slot.
   const std::size_t count = model.bodies.size();
   std::vector<double> body_omega(count, 0.0), contact_omega(count, 0.0);
   parallel_for(static_cast<int>(count), [&](int b) {
     const Body& body = model.body(b);
-    body_omega[static_cast<std::size_t>(b)] =
-        body.kind == BodyKind::deformable ? estimate_max_frequency(model, b) : 0.0;
+    double& omega = body_omega[static_cast<std::size_t>(b)];
+    omega = body.kind == BodyKind::deformable ? estimate_max_frequency(model, b) : 0.0;
+    // An F-bar body's viscous operator keeps the standard volumetric stiffness (its viscous
+    // stress uses F, model/fbar_kernel_impl.h), stiffer than its elastic one: where that
+    // viscosity is explicit, the step must hold for both (see the header).
+    if (body.kind == BodyKind::deformable &&
+        model.material_of(b).volumetric == VolumetricFormulation::fbar &&
+        body_damping(model, b, integrator) > 0.0)
+      omega = std::max(omega, estimate_viscous_frequency(model, b));
     contact_omega[static_cast<std::size_t>(b)] = contact_frequency(model, body, contact_stiffness);
   });
   // The partner's side of a contact. With D the contact springs' (weighted) gap rows, the
@@ -251,8 +318,8 @@ StableStep estimate_stable_time_step(const Model& model, double safety, double c
                                      const IntegratorParams& integrator) {
   SG_VERIFY(safety > 0.0 && safety <= 1.0,
             "time step safety factor " << safety << " must be in (0, 1]");
-  return stable_time_step(model, estimate_body_frequencies(model, contact_stiffness), safety,
-                          integrator);
+  return stable_time_step(model, estimate_body_frequencies(model, contact_stiffness, integrator),
+                          safety, integrator);
 }
 
 StableStep stable_time_step(const Model& model, const std::vector<double>& omega, double safety,

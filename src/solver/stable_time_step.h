@@ -24,14 +24,26 @@ double critical_time_step(double omega, double alpha);
 // start vector). Relative accuracy ~1e-3 after the default iterations.
 double estimate_max_frequency(const Model& model, BodyId body, int iterations = 60);
 
+// sqrt(lambda_max(M^-1/2 C M^-1/2) / alpha) of one damped deformable body at its current state
+// (C the viscous operator, model/internal_forces.h apply_viscous_operator): the frequency of
+// the stiffness C / alpha, which is the body's own K (and this its estimate_max_frequency) at
+// small strain except for an F-bar material, whose viscous stress keeps the standard
+// volumetric stiffness.
+double estimate_viscous_frequency(const Model& model, BodyId body, int iterations = 60);
+
 // The 2 c_p / h_min bound of a body (h_min: smallest distance between two of its nodes).
 double wave_speed_frequency_bound(const Model& model, BodyId body);
 
 // omega_max of every body, as estimate_stable_time_step combines them: a deformable body's
 // power-iteration frequency with its contour's contact frequency and its partner's (see
 // below), a rigid body's contact frequencies alone (0 without contacts). Deterministic,
-// parallel over bodies.
-std::vector<double> estimate_body_frequencies(const Model& model, double contact_stiffness);
+// parallel over bodies. An F-bar body (material.h VolumetricFormulation::fbar) whose
+// viscosity `integrator` treats explicitly takes the larger of its elastic and viscous
+// frequencies (estimate_viscous_frequency): its damping C = alpha K_v is not proportional to
+// its elastic K, and with omega = max of the two the mode condition a + 2c < 4 (above) holds
+// for both a <= (omega dt)^2 and c <= alpha omega^2 dt.
+std::vector<double> estimate_body_frequencies(const Model& model, double contact_stiffness,
+                                              const IntegratorParams& integrator = {});
 
 // The stiffness-proportional damping coefficient alpha that limits a body's explicit step: 0
 // for undamped bodies (Model::is_damped) and for bodies whose viscosity `integrator` treats
