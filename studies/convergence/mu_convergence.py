@@ -189,7 +189,7 @@ def read_run(runs, n, safety, seed):
             summary = json.load(f)
     except FileNotFoundError:
         return None
-    values = {q["quantity"]: q["value"] for q in summary["quantities"]}
+    values = {k: v.get("value") for k, v in summary["quantities"].items()}
     row = {"spacing_ratio": n, "node_spacing": MEAN_DIAMETER / n, "safety": safety,
            "seed": seed}
     for q in QUANTITIES + ("mu_error", "top_mu_error", "bottom_mu_error"):
@@ -374,7 +374,7 @@ def band(binary, runs):
                                 str(TEST_WINDOW[1]), "--no-plots", "--no-agglomerates"],
                                stdout=subprocess.DEVNULL)
             with open(summary) as f:
-                values = {q["quantity"]: q["value"] for q in json.load(f)["quantities"]}
+                values = {k: v.get("value") for k, v in json.load(f)["quantities"].items()}
             mu[(n, seed)] = values["mu"]
     def stats(v):
         m = sum(v) / len(v)
