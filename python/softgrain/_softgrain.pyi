@@ -30,7 +30,9 @@ class Scenario:
         """The scenario as TOML text; from_toml of it builds the same model."""
     def info(self, timing: bool = True) -> Dict[str, Any]:
         """What `softgrain info` prints, as a dict (builds the model); with timing and a
-        damped body, 'integrators': each integrator's stable step and measured cost."""
+        damped body, 'integrators': each integrator's stable step and measured cost;
+        'integrator_choice': the integrator the run steps with (with the reason when [time]
+        names none: docs/scenario.md "Integrators")."""
     @property
     def name(self) -> str:
         """The run name (the run folder is <output root>/<name>)."""
