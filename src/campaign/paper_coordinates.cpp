@@ -13,9 +13,10 @@ namespace sg {
 namespace {
 
 // The packed height of the base scenario's cell at t = 0: mean y of the top's surface minus
-// the bottom's (rigid first bodies: their contour is the rough surface). NaN otherwise.
+// the bottom's (rigid first bodies: their contour is the rough surface). NaN otherwise. The
+// first bodies alone are built: the grains' discretization does not move them.
 double packed_height(const std::filesystem::path& base_file, std::string& why) {
-  const Model model = build_model(load_scenario(base_file));
+  const Model model = build_model(load_scenario(base_file), ShearCellParts::first_bodies);
   std::vector<Vec2> positions;
   compute_contour_positions(model, positions);
   double mean[2] = {NAN, NAN};

@@ -192,7 +192,7 @@ IntegratorChoice resolve_integrator(const ScenarioDef& scenario, const Model& mo
   return written;
 }
 
-Model build_model(const ScenarioDef& scenario) {
+Model build_model(const ScenarioDef& scenario, ShearCellParts parts) {
   Model model;
   model.gravity = scenario.gravity;
   for (const MaterialDef& m : scenario.materials)
@@ -230,7 +230,7 @@ Model build_model(const ScenarioDef& scenario) {
       if (table.has(a, b)) cell.contact_stiffness = table.at(a, b).normal_stiffness;
     }
     add_shear_cell(model, cell, material_id(cell.grain_material),
-                   material_id(cell.first_body_material), scenario.discretization);
+                   material_id(cell.first_body_material), scenario.discretization, parts);
   }
   if (const auto& box = scenario.compaction_box)
     add_compaction_box(model, *box,

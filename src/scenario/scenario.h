@@ -157,7 +157,10 @@ ScenarioDef load_scenario(const std::filesystem::path& file);
 // resolve against the folder of `file` (the Python module's Scenario.from_dict).
 ScenarioDef load_scenario_text(std::string_view text, const std::filesystem::path& file);
 
-// Builds the model (discretizes every grain, sets initial velocities and stretches).
-Model build_model(const ScenarioDef& scenario);
+// Builds the model (discretizes every grain, sets initial velocities and stretches). With
+// ShearCellParts::first_bodies, a [shear_cell]'s grains are left out (shear_cell.h): the
+// model of its first bodies at t = 0, for what depends on them alone (the gap of a campaign
+// in the papers' coordinates, campaign/paper_coordinates.h).
+Model build_model(const ScenarioDef& scenario, ShearCellParts parts = ShearCellParts::whole);
 
 }  // namespace sg

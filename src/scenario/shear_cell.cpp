@@ -239,7 +239,8 @@ double servo_damping_estimate(double young, double poisson, double height, doubl
 }
 
 ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId grain_material,
-                             MaterialId first_body_material, const DiscretizationParams& params) {
+                             MaterialId first_body_material, const DiscretizationParams& params,
+                             ShearCellParts parts) {
   SG_VERIFY(def.length > 0.0 && def.grains > 0, "shear cell: length and grains must be positive");
   SG_VERIFY(def.compaction_time > 0.0, "shear cell: compaction_time must be positive");
   SG_VERIFY(def.normal_load == NormalLoad::gap || def.pressure > 0.0,
@@ -298,7 +299,8 @@ ShearCellInfo add_shear_cell(Model& model, const ShearCellDef& def, MaterialId g
                                 first_body_material, with_spacing(params, def.first_body_spacing));
   else
     add_rigid_first_bodies(model, def, surfaces, closing_speed, servo, first_body_material);
-  add_grains(model, grains, packed, mixture, grain_material, params);
+  if (parts == ShearCellParts::whole)
+    add_grains(model, grains, packed, mixture, grain_material, params);
   return info;
 }
 
