@@ -21,6 +21,7 @@
 #include "model/internal_forces.h"
 #include "model/kinematics.h"
 #include "scenes/free_grains.h"
+#include "scenes/random_motion.h"
 #include "scenes/reference_kernel.h"
 
 namespace sg {
@@ -42,15 +43,7 @@ Model random_discs(const MaterialDef& material, unsigned seed) {
   const double radii[] = {0.5, 0.37, 0.23};
   for (int k = 0; k < 3; ++k)
     scenes::add_disc(model, m, Vec2(1.2 * k, 0.0), radii[k], 0.1, "disc" + std::to_string(k));
-  std::mt19937_64 random(seed);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  NodeState& n = model.nodes;
-  for (std::size_t i = 0; i < n.size(); ++i) {
-    n.ux[i] = 0.02 * u(random) + 0.05 * n.ref_x[i];
-    n.uy[i] = 0.02 * u(random) - 0.03 * n.ref_y[i];
-    n.vx[i] = u(random);
-    n.vy[i] = u(random);
-  }
+  scenes::set_random_motion(model, seed);
   return model;
 }
 
