@@ -63,6 +63,7 @@ SPACINGS = (6.75, 9.0, 12.0, 16.0)  # D / h
 SAFETIES = (0.8, 0.6, 0.4)
 SAFETY_SPACINGS = (6.75, 9.0)       # the spacings at which every safety is run
 DEFAULT_SAFETY = 0.8
+FBAR_SPACINGS = (9.0,)              # the spacings also run with F-bar grains (issue #31 item 3)
 WINDOW = (13.0, 40.0)
 DURATION = 40.0
 QUANTITIES = ("mu", "top_mu", "bottom_mu", "bulk_share", "solid_fraction", "att_profile")
@@ -138,30 +139,40 @@ seed = {seed}
 """
 
 
-def case_name(n, safety, seed):
-    return f"h{n:g}-s{safety:g}-seed{seed}"
+def case_name(n, safety, seed, volumetric="standard"):
+    formulation = "" if volumetric == "standard" else f"-{volumetric}"
+    return f"h{n:g}-s{safety:g}{formulation}-seed{seed}"
 
 
 def cases(seeds):
-    """Seed by seed, so that an interrupted study has whole seeds (paired comparisons)."""
+    """(D/h, safety, seed, volumetric formulation), seed by seed, so that an interrupted study
+    has whole seeds (paired comparisons); the F-bar runs after the standard ones."""
     out = []
     for seed in range(1, seeds + 1):
         for n in SPACINGS:
-            out.append((n, DEFAULT_SAFETY, seed))
+            out.append((n, DEFAULT_SAFETY, seed, "standard"))
         for n in SAFETY_SPACINGS:
             for s in SAFETIES:
                 if s != DEFAULT_SAFETY:
-                    out.append((n, s, seed))
+                    out.append((n, s, seed, "standard"))
+    for seed in range(1, seeds + 1):
+        for n in FBAR_SPACINGS:
+            out.append((n, DEFAULT_SAFETY, seed, "fbar"))
     return out
 
 
-def scenario_text(n, safety, seed):
-    return SCENARIO.format(duration=DURATION, safety=safety, spacing=f"{MEAN_DIAMETER / n:.6g}",
-                           seed=seed)
+def scenario_text(n, safety, seed, volumetric="standard"):
+    text = SCENARIO.format(duration=DURATION, safety=safety,
+                           spacing=f"{MEAN_DIAMETER / n:.6g}", seed=seed)
+    if volumetric != "standard":
+        old = "damping = 0.09            # alpha~"
+        assert old in text
+        text = text.replace(old, f'volumetric = "{volumetric}"\n{old}')
+    return text
 
 
-def run_case(binary, runs, n, safety, seed, threads):
-    name = case_name(n, safety, seed)
+def run_case(binary, runs, n, safety, seed, volumetric, threads):
+    name = case_name(n, safety, seed, volumetric)
     folder = os.path.join(runs, name)
     summary = os.path.join(folder, "analysis", "summary.json")
     if os.path.exists(summary):
@@ -169,7 +180,8 @@ def run_case(binary, runs, n, safety, seed, threads):
     os.makedirs(folder, exist_ok=True)
     toml = os.path.join(runs, name + ".toml")
     with open(toml, "w") as f:
-        f.write(scenario_text(n, safety, seed).replace('name = "sheared-layer"', f'name = "{name}"'))
+        f.write(scenario_text(n, safety, seed, volumetric).replace('name = "sheared-layer"',
+                                                                   f'name = "{name}"'))
     start = time.time()
     # --overwrite: a run stopped before its analysis restarts from its beginning.
     subprocess.run([binary, "run", toml, "--threads", str(threads), "-o", runs, "--overwrite"],
@@ -182,8 +194,8 @@ def run_case(binary, runs, n, safety, seed, threads):
     print(f"{name}: {wall:.0f} s", flush=True)
 
 
-def read_run(runs, n, safety, seed):
-    folder = os.path.join(runs, case_name(n, safety, seed))
+def read_run(runs, n, safety, seed, volumetric):
+    folder = os.path.join(runs, case_name(n, safety, seed, volumetric))
     try:
         with open(os.path.join(folder, "analysis", "summary.json")) as f:
             summary = json.load(f)
@@ -191,7 +203,7 @@ def read_run(runs, n, safety, seed):
         return None
     values = {k: v.get("value") for k, v in summary["quantities"].items()}
     row = {"spacing_ratio": n, "node_spacing": MEAN_DIAMETER / n, "safety": safety,
-           "seed": seed}
+           "volumetric": volumetric, "seed": seed}
     for q in QUANTITIES + ("mu_error", "top_mu_error", "bottom_mu_error"):
         v = values.get(q)
         row[q] = "" if v is None else v
@@ -216,15 +228,15 @@ def run_size(folder):
 
 def collect(runs, seeds):
     rows = []
-    for n, s, seed in cases(seeds):
-        row = read_run(runs, n, s, seed)
+    for n, s, seed, volumetric in cases(seeds):
+        row = read_run(runs, n, s, seed, volumetric)
         if row is not None:
             rows.append(row)
     return rows
 
 
 def write_results(rows):
-    fields = ["spacing_ratio", "node_spacing", "safety", "seed", *QUANTITIES, "mu_error",
+    fields = ["spacing_ratio", "node_spacing", "safety", "volumetric", "seed", *QUANTITIES, "mu_error",
               "top_mu_error", "bottom_mu_error", "steps", "nodes", "wall_seconds"]
     tmp = RESULTS + ".tmp"
     with open(tmp, "w", newline="") as f:
@@ -236,11 +248,11 @@ def write_results(rows):
 
 
 def ensembles(rows):
-    """(D/h, safety) -> {quantity: (mean, standard error, runs)}."""
+    """(D/h, safety, volumetric) -> {quantity: (mean, standard error, runs)}."""
     out = {}
-    keys = sorted({(r["spacing_ratio"], r["safety"]) for r in rows})
+    keys = sorted({(r["spacing_ratio"], r["safety"], r["volumetric"]) for r in rows})
     for key in keys:
-        members = [r for r in rows if (r["spacing_ratio"], r["safety"]) == key]
+        members = [r for r in rows if (r["spacing_ratio"], r["safety"], r["volumetric"]) == key]
         stats = {}
         for q in QUANTITIES:
             v = [float(r[q]) for r in members if r[q] != ""]
@@ -256,13 +268,50 @@ def ensembles(rows):
 
 def paired_differences(rows, quantity, reference_ratio):
     """D/h -> (mean, standard error, pairs) of quantity(h) - quantity(reference), seed by seed,
-    at the default safety."""
-    by = {(r["spacing_ratio"], r["seed"]): r for r in rows if r["safety"] == DEFAULT_SAFETY}
+    at the default safety, standard formulation."""
+    by = {(r["spacing_ratio"], r["seed"]): r for r in rows
+          if r["safety"] == DEFAULT_SAFETY and r["volumetric"] == "standard"}
     out = {}
     for n in SPACINGS:
         d = [float(by[(n, s)][quantity]) - float(by[(reference_ratio, s)][quantity])
              for (m, s) in by if m == n and (reference_ratio, s) in by
              and by[(n, s)][quantity] != "" and by[(reference_ratio, s)][quantity] != ""]
+        if len(d) > 1:
+            mean = sum(d) / len(d)
+            se = math.sqrt(sum((x - mean) ** 2 for x in d) / (len(d) - 1) / len(d))
+            out[n] = (mean, se, len(d))
+    return out
+
+
+def safety_differences(rows, quantity):
+    """(D/h, safety) -> (mean, standard error, pairs) of quantity(safety) - quantity(smallest
+    safety) at the same spacing, seed by seed, standard formulation."""
+    finest = min(SAFETIES)
+    by = {(r["spacing_ratio"], r["safety"], r["seed"]): r for r in rows
+          if r["volumetric"] == "standard" and r[quantity] != ""}
+    out = {}
+    for n in SAFETY_SPACINGS:
+        for s in SAFETIES:
+            if s == finest:
+                continue
+            d = [float(by[(n, s, seed)][quantity]) - float(by[(n, finest, seed)][quantity])
+                 for (m, v, seed) in by if m == n and v == s and (n, finest, seed) in by]
+            if len(d) > 1:
+                mean = sum(d) / len(d)
+                se = math.sqrt(sum((x - mean) ** 2 for x in d) / (len(d) - 1) / len(d))
+                out[(n, s)] = (mean, se, len(d))
+    return out
+
+
+def fbar_differences(rows, quantity):
+    """D/h -> (mean, standard error, pairs) of quantity(F-bar) - quantity(standard), seed by
+    seed, at the default safety."""
+    by = {(r["spacing_ratio"], r["volumetric"], r["seed"]): r for r in rows
+          if r["safety"] == DEFAULT_SAFETY and r[quantity] != ""}
+    out = {}
+    for n in FBAR_SPACINGS:
+        d = [float(by[(n, "fbar", s)][quantity]) - float(by[(n, "standard", s)][quantity])
+             for (m, v, s) in by if m == n and v == "fbar" and (n, "standard", s) in by]
         if len(d) > 1:
             mean = sum(d) / len(d)
             se = math.sqrt(sum((x - mean) ** 2 for x in d) / (len(d) - 1) / len(d))
@@ -278,7 +327,8 @@ def plot(rows):
     fig, axes = plt.subplots(2, 3, figsize=(13, 7.5))
     for ax, q in zip(axes.flat, QUANTITIES):
         for safety, marker in zip(SAFETIES, ("o", "s", "^")):
-            pts = [(n, stats[(n, s)][q]) for (n, s) in stats if s == safety and q in stats[(n, s)]]
+            pts = [(n, st[q]) for (n, s, v), st in stats.items()
+                   if s == safety and v == "standard" and q in st]
             if not pts:
                 continue
             pts.sort()
@@ -286,8 +336,13 @@ def plot(rows):
             ax.errorbar(x, [m for _, (m, _, _) in pts], yerr=[e for _, (_, e, _) in pts],
                         marker=marker, capsize=3, label=f"safety {safety}")
             for r in rows:
-                if r["safety"] == safety and r[q] != "":
+                if r["safety"] == safety and r["volumetric"] == "standard" and r[q] != "":
                     ax.plot(r["node_spacing"], float(r[q]), ".", color="grey", alpha=0.4)
+        fbar = [(n, st[q]) for (n, s, v), st in stats.items() if v == "fbar" and q in st]
+        if fbar:
+            ax.errorbar([MEAN_DIAMETER / n + 0.004 for n, _ in fbar], [m for _, (m, _, _) in fbar],
+                        yerr=[e for _, (_, e, _) in fbar], marker="D", color="black",
+                        linestyle="none", capsize=3, label="F-bar, safety 0.8")
         ax.set_xlabel("node spacing h (mean diameter 1)")
         ax.set_title(LABELS[q], fontsize=10)
         ax.set_xlim(left=0)
@@ -303,9 +358,10 @@ def plot(rows):
 
 def markdown(rows):
     stats = ensembles(rows)
-    print("| D/h | safety | runs | μ | μ top | μ bottom | p_wb | solid fraction | ATT |")
-    print("|---|---|---|---|---|---|---|---|---|")
-    for (n, s), st in sorted(stats.items(), key=lambda kv: (kv[0][1] != DEFAULT_SAFETY, kv[0])):
+    print("| D/h | safety | grains | runs | μ | μ top | μ bottom | p_wb | solid fraction | ATT |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    order = lambda kv: (kv[0][2] != "standard", kv[0][1] != DEFAULT_SAFETY, kv[0])
+    for (n, s, v), st in sorted(stats.items(), key=order):
         cells = []
         for q in QUANTITIES:
             if q in st:
@@ -314,7 +370,7 @@ def markdown(rows):
             else:
                 cells.append("-")
         runs = max((v[2] for v in st.values()), default=0)
-        print(f"| {n:g} | {s:g} | {runs} | " + " | ".join(cells) + " |")
+        print(f"| {n:g} | {s:g} | {v} | {runs} | " + " | ".join(cells) + " |")
     finest = max(SPACINGS)
     print()
     print(f"Paired differences against D/h = {finest:g} (safety {DEFAULT_SAFETY}), seed by seed:")
@@ -328,6 +384,34 @@ def markdown(rows):
             d = diffs[q].get(n)
             cells.append("-" if d is None else f"{d[0]:+.3g} ± {d[1]:.2g} ({d[2]})")
         print(f"| {n:g} | " + " | ".join(cells) + " |")
+    safety = {q: safety_differences(rows, q) for q in QUANTITIES}
+    print()
+    print(f"Paired differences against safety {min(SAFETIES):g} at the same spacing, seed by seed:")
+    print()
+    print("| D/h | safety | " + " | ".join(LABELS[q] for q in QUANTITIES) + " |")
+    print("|---|---|" + "---|" * len(QUANTITIES))
+    for n in SAFETY_SPACINGS:
+        for s in SAFETIES:
+            if s == min(SAFETIES):
+                continue
+            cells = []
+            for q in QUANTITIES:
+                d = safety[q].get((n, s))
+                cells.append("-" if d is None else f"{d[0]:+.3g} ± {d[1]:.2g} ({d[2]})")
+            print(f"| {n:g} | {s:g} | " + " | ".join(cells) + " |")
+    fbar = {q: fbar_differences(rows, q) for q in QUANTITIES}
+    if any(fbar.values()):
+        print()
+        print(f"Paired differences F-bar - standard (safety {DEFAULT_SAFETY}), seed by seed:")
+        print()
+        print("| D/h | " + " | ".join(LABELS[q] for q in QUANTITIES) + " |")
+        print("|---|" + "---|" * len(QUANTITIES))
+        for n in FBAR_SPACINGS:
+            cells = []
+            for q in QUANTITIES:
+                d = fbar[q].get(n)
+                cells.append("-" if d is None else f"{d[0]:+.3g} ± {d[1]:.2g} ({d[2]})")
+            print(f"| {n:g} | " + " | ".join(cells) + " |")
 
 # The regression test's cell (tests/scenario/test_mu_discretization.cpp): the study's layer
 # cut to L = 4 and 24 grains (about 5 grains thick; the servo damping scaled with L), 12 time
@@ -412,9 +496,9 @@ def main():
         return
     if a.command == "run":
         os.makedirs(a.runs, exist_ok=True)
-        for n, s, seed in cases(a.seeds):
-            if a.only in case_name(n, s, seed):
-                run_case(os.path.abspath(a.bin), a.runs, n, s, seed, a.threads)
+        for n, s, seed, volumetric in cases(a.seeds):
+            if a.only in case_name(n, s, seed, volumetric):
+                run_case(os.path.abspath(a.bin), a.runs, n, s, seed, volumetric, a.threads)
     rows = collect(a.runs, a.seeds)
     if a.command == "markdown":
         markdown(rows)
