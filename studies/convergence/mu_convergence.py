@@ -27,9 +27,12 @@ python3-matplotlib).
 
 Why the choices:
 - the ensemble: seeds 1-5 draw five equivalent cells (grain sizes, packing, both rough
-  surfaces); the same five cells are run at every spacing and safety, so a spacing's effect
-  can also be read seed by seed (paired differences). Within a run, the shear flow is chaotic:
-  the scatter of the ensemble is that of the quantity itself over a finite window;
+  surfaces). At one spacing, every safety (and F-bar) starts from the same state of a seed, so
+  their effects are read seed by seed (paired differences). The packing is drawn with the
+  discretized grains, so at another spacing a seed gives the same grain sizes and roughness but
+  another arrangement: differences between spacings are paired in sizes and roughness only.
+  Within a run the shear flow is chaotic: the scatter of the ensemble is that of the quantity
+  itself over a finite window;
 - the loading: the pressure p = 1 is ramped over 2 time units on a loose packing (height 12.4);
   the top first body is light (density 0.1) with a servo damping 15 (terminal velocity p L / c
   = 0.53), which brought the layer to its sheared thickness by t ~ 12 without the breathing
