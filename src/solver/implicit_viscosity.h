@@ -92,6 +92,10 @@ class ImplicitViscosity {
     std::vector<Mat2> reference_gradients;  // F_ref, empty until the first assembly
     Mat2 reference_rotation = Mat2::Identity();
     Eigen::VectorXd rhs, x, r, z, p, q, work_x, work_y, split_x, split_y;  // scratch
+    // Objective model, the first guess (solve()): the preconditioned right-hand side, and the
+    // corrections CG added to it at the last two solves with the current reference (how many).
+    Eigen::VectorXd preconditioned, correction, older_correction;
+    int corrections = 0;
     ViscousSolveStatistics statistics;
   };
   double tolerance_, refactor_threshold_;
@@ -100,8 +104,8 @@ class ImplicitViscosity {
 
   void factorize(BodySystem& system, double h);
   // Objective model: C(F_ref) assembled anew (and factored) when refresh_preconditioners()
-  // asked for it or the stretch has moved on by more than the threshold.
-  void update_reference(const Model& model, BodySystem& system, const Mat2& rotation, double h);
+  // asked for it or the stretch has moved on by more than the threshold; true if it was.
+  bool update_reference(const Model& model, BodySystem& system, const Mat2& rotation, double h);
   // The objective model's conjugate gradients from system.x, preconditioned with the factor
   // turned by `turn` (R R_ref^T); returns the iteration count.
   int conjugate_gradients(const Model& model, BodySystem& system, double h, const Mat2& turn);
