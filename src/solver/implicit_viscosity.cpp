@@ -160,7 +160,8 @@ ImplicitViscosity::ImplicitViscosity(const Model& model, double tolerance,
                                      double refactor_threshold)
     : tolerance_(tolerance),
       refactor_threshold_(refactor_threshold),
-      system_of_body_(model.bodies.size(), -1) {
+      system_of_body_(model.bodies.size(), -1),
+      gradient_outputs_(model.bodies.size(), nullptr) {
   SG_VERIFY(tolerance > 0.0 && tolerance < 1.0,
             "imex: the solver tolerance must be in (0, 1), got " << tolerance);
   SG_VERIFY(refactor_threshold >= 0.0,
@@ -179,6 +180,11 @@ ImplicitViscosity::ImplicitViscosity(const Model& model, double tolerance,
     for (int i = 0; i < body.node_count(); ++i) {
       const double m = model.nodes.mass[static_cast<std::size_t>(body.node_begin + i)];
       s.mass[2 * i] = s.mass[2 * i + 1] = m;
+    }
+    if (s.model == DampingModel::objective &&
+        model.material_of(id).volumetric == VolumetricFormulation::standard) {
+      s.gradients.resize(static_cast<std::size_t>(body.gauss_end - body.gauss_begin));
+      gradient_outputs_[b] = s.gradients.data();
     }
     SparseMatrix pattern = s.damping;
     pattern.diagonal() += s.mass;
@@ -318,7 +324,7 @@ int ImplicitViscosity::conjugate_gradients(const Model& model, BodySystem& s, do
 
 void ImplicitViscosity::solve(const Model& model, BodyId b, double h, const double* ux,
                               const double* uy, const double* fx, const double* fy, double* dvx,
-                              double* dvy) {
+                              double* dvy, bool gradients_given) {
   const int index = system_of_body_[static_cast<std::size_t>(b)];
   SG_ASSERT(index >= 0, "body " << b << " has no implicit viscosity");
   BodySystem& s = *systems_[static_cast<std::size_t>(index)];
@@ -334,7 +340,8 @@ void ImplicitViscosity::solve(const Model& model, BodyId b, double h, const doub
                             : body_rotation(model, body, ux, uy).matrix();
   ++s.statistics.solves;
   if (s.model == DampingModel::objective) {
-    body_deformation_gradients(model, b, ux, uy, s.gradients);
+    if (!gradients_given || gradient_outputs_[static_cast<std::size_t>(b)] == nullptr)
+      body_deformation_gradients(model, b, ux, uy, s.gradients);
     if (update_reference(model, s, rotation, h)) s.corrections = 0;
     // The preconditioner's factor is of Q A_ref Q^T with Q the rotation since the reference.
     const Mat2 turn = rotation * s.reference_rotation.transpose();

@@ -72,9 +72,17 @@ class ImplicitViscosity {
 
   // The velocity increment dv of `body` (local numbering) for the step with velocity interval
   // h: solves (M + h/2 C) dv = h F with F = fx, fy (the body's total force, local numbering)
-  // at displacement parameters ux, uy. Thread-safe for different bodies.
+  // at displacement parameters ux, uy. Thread-safe for different bodies. `gradients_given`:
+  // the force kernel has just written F at ux, uy where gradient_outputs() points (the
+  // stepper's force phase), so the objective model does not compute them again.
   void solve(const Model& model, BodyId body, double h, const double* ux, const double* uy,
-             const double* fx, const double* fy, double* dvx, double* dvy);
+             const double* fx, const double* fy, double* dvx, double* dvy,
+             bool gradients_given = false);
+
+  // Per body of the model: where the force kernel may leave its F for solve() (objective
+  // model, standard formulation), else null (add_internal_forces' `gradients`). A body whose
+  // entry is null computes its F in solve() whatever `gradients_given` says.
+  const std::vector<Mat2*>& gradient_outputs() const { return gradient_outputs_; }
 
   ViscousSolveStatistics statistics() const;  // summed over bodies in body order
 
@@ -101,6 +109,7 @@ class ImplicitViscosity {
   double tolerance_, refactor_threshold_;
   std::vector<int> system_of_body_;                   // index into systems_, or -1 (explicit)
   std::vector<std::unique_ptr<BodySystem>> systems_;  // (Eigen's factors cannot be moved)
+  std::vector<Mat2*> gradient_outputs_;
 
   void factorize(BodySystem& system, double h);
   // Objective model: C(F_ref) assembled anew (and factored) when refresh_preconditioners()
