@@ -31,10 +31,13 @@ struct BodyForceResult {
 
 // The node arrays a body's force evaluation reads and writes, from the body's first node (the
 // rows' local numbering). vx, vy are read for damped bodies only; viscous_fx, viscous_fy may be
-// null (no split of the viscous part) and are otherwise added to, like fx, fy.
+// null (no split of the viscous part) and are otherwise added to, like fx, fy. `gradients`,
+// if not null, receives F at each Gauss point (g - body.gauss_begin), the bits
+// deformation_gradients() computes (standard formulation; the F-bar kernel leaves it alone).
 struct BodyArrays {
   const double *ux, *uy, *vx, *vy;
   double *fx, *fy, *viscous_fx, *viscous_fy;
+  Mat2* gradients = nullptr;
 };
 
 struct ForceKernel {

@@ -42,6 +42,19 @@ inline ChunkStress chunk_stress(const MaterialParams& material, const Chunk& c,
   return out;
 }
 
+// F of a chunk's lanes into out[0 .. c.lanes).
+inline void store_gradients(const Chunk& c, const Tensor2B& f, Mat2* out) {
+  alignas(kSimdAlignment) std::array<std::array<double, W>, 4> v;
+  f.xx.store_aligned(v[0].data());
+  f.xy.store_aligned(v[1].data());
+  f.yx.store_aligned(v[2].data());
+  f.yy.store_aligned(v[3].data());
+  for (int l = 0; l < c.lanes; ++l) {
+    const auto i = static_cast<std::size_t>(l);
+    out[l] << v[0][i], v[1][i], v[2][i], v[3][i];
+  }
+}
+
 // The body's forces with KU state fields per node (2: u; 4: u and v, damped bodies) and KF
 // force fields (2: f; 4: f and its viscous part).
 template <int KU, int KF>
@@ -60,6 +73,7 @@ BodyForceResult body_forces(const Model& model, const Body& body, const BodyArra
     // Displacement gradient H = F - I and (damped) its rate, in one pass over the rows.
     const std::array<Tensor2B, KU / 2> gradients = chunk_gradients<KU>(rows, c, state);
     const Tensor2B f = identity_plus(gradients[0]);
+    if (a.gradients) store_gradients(c, f, a.gradients + (c.first - body.gauss_begin));
     const DoubleBatch jacobian = f.xx * f.yy - f.yx * f.xy;
     if (const int bad = first_bad_lane(c, jacobian); bad >= 0) {
       result.bad_gauss_point = c.first + bad;

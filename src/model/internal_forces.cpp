@@ -13,7 +13,7 @@ BodyForceResult add_body_internal_forces(const Model& model, BodyId body_id, con
                                          const double* uy, const double* vx, const double* vy,
                                          double* fx, double* fy, bool with_damping,
                                          double* viscous_fx, double* viscous_fy,
-                                         const ForceKernel* kernel) {
+                                         const ForceKernel* kernel, Mat2* gradients) {
   const Body& body = model.body(body_id);
   const MaterialParams& material = model.material_of(body_id);
   const bool damped = with_damping && model.is_damped(body_id);
@@ -31,7 +31,8 @@ BodyForceResult add_body_internal_forces(const Model& model, BodyId body_id, con
                           fx,
                           fy,
                           split_viscous ? viscous_fx : nullptr,
-                          split_viscous ? viscous_fy : nullptr};
+                          split_viscous ? viscous_fy : nullptr,
+                          gradients};
   return (kernel ? *kernel : force_kernel()).body_forces(model, body, arrays, damped, rotation);
 }
 
@@ -49,7 +50,7 @@ void apply_viscous_operator(const Model& model, BodyId body_id, const std::vecto
   force_kernel().viscous_operator(model, body, gradients.data(), rotation, x, y, out_x, out_y);
 }
 
-InternalForceResult add_internal_forces(Model& model) {
+InternalForceResult add_internal_forces(Model& model, const std::vector<Mat2*>* gradients) {
   const int body_count = static_cast<int>(model.bodies.size());
   std::vector<BodyForceResult> per_body(model.bodies.size());
   NodeState& n = model.nodes;
@@ -61,7 +62,8 @@ InternalForceResult add_internal_forces(Model& model) {
     const auto o = static_cast<std::size_t>(body.node_begin);
     per_body[static_cast<std::size_t>(b)] = add_body_internal_forces(
         model, b, n.ux.data() + o, n.uy.data() + o, n.vx.data() + o, n.vy.data() + o,
-        n.fx.data() + o, n.fy.data() + o, true, n.viscous_fx.data() + o, n.viscous_fy.data() + o);
+        n.fx.data() + o, n.fy.data() + o, true, n.viscous_fx.data() + o, n.viscous_fy.data() + o,
+        nullptr, gradients ? (*gradients)[static_cast<std::size_t>(b)] : nullptr);
   }
   InternalForceResult total;
   for (int b = 0; b < body_count; ++b) {

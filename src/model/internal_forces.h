@@ -20,7 +20,8 @@ BodyForceResult add_body_internal_forces(const Model& model, BodyId body, const 
                                          const double* uy, const double* vx, const double* vy,
                                          double* fx, double* fy, bool with_damping = true,
                                          double* viscous_fx = nullptr, double* viscous_fy = nullptr,
-                                         const ForceKernel* kernel = nullptr);
+                                         const ForceKernel* kernel = nullptr,
+                                         Mat2* gradients = nullptr);
 
 // The viscous operator of a deformable body at a fixed deformation: out = C x, where the
 // viscous force of the body under the velocity parameters x is f_v = -C x (C symmetric
@@ -43,6 +44,9 @@ struct InternalForceResult {
 // All deformable bodies, in parallel over bodies (each writes only its own node range,
 // and the energies are reduced in body order: results do not depend on the thread count).
 // Throws sg::Error naming the body and the Gauss point if a deformation is invalid.
-InternalForceResult add_internal_forces(Model& model);
+// `gradients`, if given, holds per body null or where its F go (BodyArrays::gradients): the
+// IMEX solve of the objective damping model reuses them (solver/implicit_viscosity.h).
+InternalForceResult add_internal_forces(Model& model,
+                                        const std::vector<Mat2*>* gradients = nullptr);
 
 }  // namespace sg

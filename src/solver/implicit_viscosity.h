@@ -72,9 +72,17 @@ class ImplicitViscosity {
 
   // The velocity increment dv of `body` (local numbering) for the step with velocity interval
   // h: solves (M + h/2 C) dv = h F with F = fx, fy (the body's total force, local numbering)
-  // at displacement parameters ux, uy. Thread-safe for different bodies.
+  // at displacement parameters ux, uy. Thread-safe for different bodies. `gradients_given`:
+  // the force kernel has just written F at ux, uy where gradient_outputs() points (the
+  // stepper's force phase), so the objective model does not compute them again.
   void solve(const Model& model, BodyId body, double h, const double* ux, const double* uy,
-             const double* fx, const double* fy, double* dvx, double* dvy);
+             const double* fx, const double* fy, double* dvx, double* dvy,
+             bool gradients_given = false);
+
+  // Per body of the model: where the force kernel may leave its F for solve() (objective
+  // model, standard formulation), else null (add_internal_forces' `gradients`). A body whose
+  // entry is null computes its F in solve() whatever `gradients_given` says.
+  const std::vector<Mat2*>& gradient_outputs() const { return gradient_outputs_; }
 
   ViscousSolveStatistics statistics() const;  // summed over bodies in body order
 
@@ -92,16 +100,21 @@ class ImplicitViscosity {
     std::vector<Mat2> reference_gradients;  // F_ref, empty until the first assembly
     Mat2 reference_rotation = Mat2::Identity();
     Eigen::VectorXd rhs, x, r, z, p, q, work_x, work_y, split_x, split_y;  // scratch
+    // Objective model, the first guess (solve()): the preconditioned right-hand side, and the
+    // corrections CG added to it at the last two solves with the current reference (how many).
+    Eigen::VectorXd preconditioned, correction, older_correction;
+    int corrections = 0;
     ViscousSolveStatistics statistics;
   };
   double tolerance_, refactor_threshold_;
   std::vector<int> system_of_body_;                   // index into systems_, or -1 (explicit)
   std::vector<std::unique_ptr<BodySystem>> systems_;  // (Eigen's factors cannot be moved)
+  std::vector<Mat2*> gradient_outputs_;
 
   void factorize(BodySystem& system, double h);
   // Objective model: C(F_ref) assembled anew (and factored) when refresh_preconditioners()
-  // asked for it or the stretch has moved on by more than the threshold.
-  void update_reference(const Model& model, BodySystem& system, const Mat2& rotation, double h);
+  // asked for it or the stretch has moved on by more than the threshold; true if it was.
+  bool update_reference(const Model& model, BodySystem& system, const Mat2& rotation, double h);
   // The objective model's conjugate gradients from system.x, preconditioned with the factor
   // turned by `turn` (R R_ref^T); returns the iteration count.
   int conjugate_gradients(const Model& model, BodySystem& system, double h, const Mat2& turn);

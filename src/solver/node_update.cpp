@@ -90,8 +90,9 @@ void advance_body_implicitly(const Model& model, NodeState& n, BodyId b, double 
   const auto o = static_cast<std::size_t>(body.node_begin);
   double* dvx = increment_x + o;
   double* dvy = increment_y + o;
+  // (The force phase of this step left F at u_n in the solve's store: gradients_given.)
   viscosity.solve(model, b, h, n.ux.data() + o, n.uy.data() + o, n.fx.data() + o, n.fy.data() + o,
-                  dvx, dvy);
+                  dvx, dvy, true);
   for (int k = body.node_begin; k < body.node_end; ++k) {
     const auto i = static_cast<std::size_t>(k);
     const double vx_old = n.vx[i], vy_old = n.vy[i];

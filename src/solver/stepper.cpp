@@ -84,7 +84,8 @@ ContactStepResult Stepper::compute_contact_forces(const StepSizes& steps) {
 
 InternalForceResult Stepper::compute_internal_forces() {
   try {
-    return add_internal_forces(model_);
+    // IMEX, objective damping: the force kernel leaves F where the velocity solve reads it.
+    return add_internal_forces(model_, implicit_ ? &implicit_->gradient_outputs() : nullptr);
   } catch (const Error& e) {
     SG_THROW(e.what() << " at step " << state_.step << ", time " << state_.time);
   }

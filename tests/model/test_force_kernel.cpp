@@ -170,6 +170,8 @@ TEST(ForceKernel, EveryVersionMatchesTheScalarKernelForEveryLawAndDampingModel) 
       }
 }
 
+// Each version's viscous operator and deformation gradients are the scalar reference's, and so
+// are the gradients its force evaluation writes out.
 TEST(ForceKernel, EveryVersionsViscousOperatorAndGradientsAreTheScalarOnes) {
   for (const ForceKernel* kernel : available_force_kernels())
     for (DampingModel damping :
@@ -189,6 +191,16 @@ TEST(ForceKernel, EveryVersionsViscousOperatorAndGradientsAreTheScalarOnes) {
         scenes::reference_deformation_gradients(model, b, n.ux.data() + o, n.uy.data() + o,
                                                 reference_f);
         ASSERT_EQ(ours_f, reference_f) << kernel->isa;
+        // The F the force evaluation leaves for the IMEX solve (BodyArrays::gradients): the
+        // same bits, damped or not.
+        for (const bool damped : {false, true}) {
+          std::vector<Mat2> from_forces(ours_f.size(), Mat2::Zero());
+          std::vector<double> fx(count), fy(count);
+          add_body_internal_forces(model, b, n.ux.data() + o, n.uy.data() + o, n.vx.data() + o,
+                                   n.vy.data() + o, fx.data(), fy.data(), damped, nullptr, nullptr,
+                                   kernel, from_forces.data());
+          ASSERT_EQ(from_forces, ours_f) << kernel->isa << (damped ? ", damped" : "");
+        }
         std::vector<double> ax(count), ay(count), bx(count), by(count);
         kernel->viscous_operator(model, body, ours_f.data(), rotation, n.vx.data() + o,
                                  n.vy.data() + o, ax.data(), ay.data());
