@@ -67,6 +67,10 @@ SAFETIES = (0.8, 0.6, 0.4)
 SAFETY_SPACINGS = (6.75, 9.0)       # the spacings at which every safety is run
 DEFAULT_SAFETY = 0.8
 FBAR_SPACINGS = (9.0,)              # the spacings also run with F-bar grains (issue #31 item 3)
+EXPLICIT_CASES = ((6.75, 1),)       # (D/h, seed) also run with the explicit integrator
+# The variants of the standard runs (imex, standard grains): "fbar" (volumetric = "fbar") and
+# "explicit" (integrator = "explicit": 13 times the cost, so one run).
+VARIANTS = ("fbar", "explicit")
 WINDOW = (13.0, 40.0)
 DURATION = 40.0
 QUANTITIES = ("mu", "top_mu", "bottom_mu", "bulk_share", "solid_fraction", "att_profile")
@@ -142,14 +146,14 @@ seed = {seed}
 """
 
 
-def case_name(n, safety, seed, volumetric="standard"):
-    formulation = "" if volumetric == "standard" else f"-{volumetric}"
-    return f"h{n:g}-s{safety:g}{formulation}-seed{seed}"
+def case_name(n, safety, seed, variant="standard"):
+    suffix = "" if variant == "standard" else f"-{variant}"
+    return f"h{n:g}-s{safety:g}{suffix}-seed{seed}"
 
 
 def cases(seeds):
-    """(D/h, safety, seed, volumetric formulation), seed by seed, so that an interrupted study
-    has whole seeds (paired comparisons); the F-bar runs after the standard ones."""
+    """(D/h, safety, seed, variant), seed by seed, so that an interrupted study has whole seeds
+    (paired comparisons); the F-bar runs after the standard ones, the explicit one last."""
     out = []
     for seed in range(1, seeds + 1):
         for n in SPACINGS:
@@ -161,21 +165,27 @@ def cases(seeds):
     for seed in range(1, seeds + 1):
         for n in FBAR_SPACINGS:
             out.append((n, DEFAULT_SAFETY, seed, "fbar"))
+    for n, seed in EXPLICIT_CASES:
+        if seed <= seeds:
+            out.append((n, DEFAULT_SAFETY, seed, "explicit"))
     return out
 
 
-def scenario_text(n, safety, seed, volumetric="standard"):
+def scenario_text(n, safety, seed, variant="standard"):
     text = SCENARIO.format(duration=DURATION, safety=safety,
                            spacing=f"{MEAN_DIAMETER / n:.6g}", seed=seed)
-    if volumetric != "standard":
+    if variant == "fbar":
         old = "damping = 0.09            # alpha~"
         assert old in text
-        text = text.replace(old, f'volumetric = "{volumetric}"\n{old}')
+        text = text.replace(old, f'volumetric = "fbar"\n{old}')
+    elif variant == "explicit":
+        assert 'integrator = "imex"' in text
+        text = text.replace('integrator = "imex"', 'integrator = "explicit"')
     return text
 
 
-def run_case(binary, runs, n, safety, seed, volumetric, threads):
-    name = case_name(n, safety, seed, volumetric)
+def run_case(binary, runs, n, safety, seed, variant, threads):
+    name = case_name(n, safety, seed, variant)
     folder = os.path.join(runs, name)
     summary = os.path.join(folder, "analysis", "summary.json")
     if os.path.exists(summary):
@@ -183,7 +193,7 @@ def run_case(binary, runs, n, safety, seed, volumetric, threads):
     os.makedirs(folder, exist_ok=True)
     toml = os.path.join(runs, name + ".toml")
     with open(toml, "w") as f:
-        f.write(scenario_text(n, safety, seed, volumetric).replace('name = "sheared-layer"',
+        f.write(scenario_text(n, safety, seed, variant).replace('name = "sheared-layer"',
                                                                    f'name = "{name}"'))
     start = time.time()
     # --overwrite: a run stopped before its analysis restarts from its beginning.
@@ -197,8 +207,8 @@ def run_case(binary, runs, n, safety, seed, volumetric, threads):
     print(f"{name}: {wall:.0f} s", flush=True)
 
 
-def read_run(runs, n, safety, seed, volumetric):
-    folder = os.path.join(runs, case_name(n, safety, seed, volumetric))
+def read_run(runs, n, safety, seed, variant):
+    folder = os.path.join(runs, case_name(n, safety, seed, variant))
     try:
         with open(os.path.join(folder, "analysis", "summary.json")) as f:
             summary = json.load(f)
@@ -206,7 +216,7 @@ def read_run(runs, n, safety, seed, volumetric):
         return None
     values = {k: v.get("value") for k, v in summary["quantities"].items()}
     row = {"spacing_ratio": n, "node_spacing": MEAN_DIAMETER / n, "safety": safety,
-           "volumetric": volumetric, "seed": seed}
+           "variant": variant, "seed": seed}
     for q in QUANTITIES + ("mu_error", "top_mu_error", "bottom_mu_error"):
         v = values.get(q)
         row[q] = "" if v is None else v
@@ -217,29 +227,32 @@ def read_run(runs, n, safety, seed, volumetric):
 
 
 def run_size(folder):
-    """Steps and nodes from run.log's last line ("run '...': N steps of dt, M nodes, ...")."""
+    """Accepted steps and nodes from run.log ("# steps: N accepted, ..." and "# model: B bodies,
+    M nodes, ...")."""
+    steps = nodes = ""
     try:
         for line in open(os.path.join(folder, "run.log")):
-            if line.startswith("run '") and " steps of " in line:
-                words = line.replace(",", "").split()
-                steps = words[words.index("steps") - 1]
+            words = line.replace(",", "").split()
+            if line.startswith("# steps:") and "accepted" in words:
+                steps = words[words.index("accepted") - 1]
+            if line.startswith("# model:") and "nodes" in words:
                 nodes = words[words.index("nodes") - 1]
-        return steps, nodes
-    except (FileNotFoundError, UnboundLocalError, ValueError):
-        return "", ""
+    except FileNotFoundError:
+        pass
+    return steps, nodes
 
 
 def collect(runs, seeds):
     rows = []
-    for n, s, seed, volumetric in cases(seeds):
-        row = read_run(runs, n, s, seed, volumetric)
+    for n, s, seed, variant in cases(seeds):
+        row = read_run(runs, n, s, seed, variant)
         if row is not None:
             rows.append(row)
     return rows
 
 
 def write_results(rows):
-    fields = ["spacing_ratio", "node_spacing", "safety", "volumetric", "seed", *QUANTITIES, "mu_error",
+    fields = ["spacing_ratio", "node_spacing", "safety", "variant", "seed", *QUANTITIES, "mu_error",
               "top_mu_error", "bottom_mu_error", "steps", "nodes", "wall_seconds"]
     tmp = RESULTS + ".tmp"
     with open(tmp, "w", newline="") as f:
@@ -251,11 +264,11 @@ def write_results(rows):
 
 
 def ensembles(rows):
-    """(D/h, safety, volumetric) -> {quantity: (mean, standard error, runs)}."""
+    """(D/h, safety, variant) -> {quantity: (mean, standard error, runs)}."""
     out = {}
-    keys = sorted({(r["spacing_ratio"], r["safety"], r["volumetric"]) for r in rows})
+    keys = sorted({(r["spacing_ratio"], r["safety"], r["variant"]) for r in rows})
     for key in keys:
-        members = [r for r in rows if (r["spacing_ratio"], r["safety"], r["volumetric"]) == key]
+        members = [r for r in rows if (r["spacing_ratio"], r["safety"], r["variant"]) == key]
         stats = {}
         for q in QUANTITIES:
             v = [float(r[q]) for r in members if r[q] != ""]
@@ -273,7 +286,7 @@ def paired_differences(rows, quantity, reference_ratio):
     """D/h -> (mean, standard error, pairs) of quantity(h) - quantity(reference), seed by seed,
     at the default safety, standard formulation."""
     by = {(r["spacing_ratio"], r["seed"]): r for r in rows
-          if r["safety"] == DEFAULT_SAFETY and r["volumetric"] == "standard"}
+          if r["safety"] == DEFAULT_SAFETY and r["variant"] == "standard"}
     out = {}
     for n in SPACINGS:
         d = [float(by[(n, s)][quantity]) - float(by[(reference_ratio, s)][quantity])
@@ -291,7 +304,7 @@ def safety_differences(rows, quantity):
     safety) at the same spacing, seed by seed, standard formulation."""
     finest = min(SAFETIES)
     by = {(r["spacing_ratio"], r["safety"], r["seed"]): r for r in rows
-          if r["volumetric"] == "standard" and r[quantity] != ""}
+          if r["variant"] == "standard" and r[quantity] != ""}
     out = {}
     for n in SAFETY_SPACINGS:
         for s in SAFETIES:
@@ -306,18 +319,19 @@ def safety_differences(rows, quantity):
     return out
 
 
-def fbar_differences(rows, quantity):
-    """D/h -> (mean, standard error, pairs) of quantity(F-bar) - quantity(standard), seed by
-    seed, at the default safety."""
-    by = {(r["spacing_ratio"], r["volumetric"], r["seed"]): r for r in rows
+def variant_differences(rows, quantity, variant):
+    """D/h -> (mean, standard error or nan, pairs) of quantity(variant) - quantity(standard),
+    seed by seed, at the default safety."""
+    by = {(r["spacing_ratio"], r["variant"], r["seed"]): r for r in rows
           if r["safety"] == DEFAULT_SAFETY and r[quantity] != ""}
     out = {}
-    for n in FBAR_SPACINGS:
-        d = [float(by[(n, "fbar", s)][quantity]) - float(by[(n, "standard", s)][quantity])
-             for (m, v, s) in by if m == n and v == "fbar" and (n, "standard", s) in by]
-        if len(d) > 1:
+    for n in SPACINGS:
+        d = [float(by[(n, variant, s)][quantity]) - float(by[(n, "standard", s)][quantity])
+             for (m, v, s) in by if m == n and v == variant and (n, "standard", s) in by]
+        if d:
             mean = sum(d) / len(d)
-            se = math.sqrt(sum((x - mean) ** 2 for x in d) / (len(d) - 1) / len(d))
+            se = (math.sqrt(sum((x - mean) ** 2 for x in d) / (len(d) - 1) / len(d))
+                  if len(d) > 1 else float("nan"))
             out[n] = (mean, se, len(d))
     return out
 
@@ -339,13 +353,17 @@ def plot(rows):
             ax.errorbar(x, [m for _, (m, _, _) in pts], yerr=[e for _, (_, e, _) in pts],
                         marker=marker, capsize=3, label=f"safety {safety}")
             for r in rows:
-                if r["safety"] == safety and r["volumetric"] == "standard" and r[q] != "":
+                if r["safety"] == safety and r["variant"] == "standard" and r[q] != "":
                     ax.plot(r["node_spacing"], float(r[q]), ".", color="grey", alpha=0.4)
-        fbar = [(n, st[q]) for (n, s, v), st in stats.items() if v == "fbar" and q in st]
-        if fbar:
-            ax.errorbar([MEAN_DIAMETER / n + 0.004 for n, _ in fbar], [m for _, (m, _, _) in fbar],
-                        yerr=[e for _, (_, e, _) in fbar], marker="D", color="black",
-                        linestyle="none", capsize=3, label="F-bar, safety 0.8")
+        for variant, marker, label in (("fbar", "D", "F-bar, safety 0.8"),
+                                       ("explicit", "x", "explicit, seed 1")):
+            pts = [(n, st[q]) for (n, s, v), st in stats.items() if v == variant and q in st]
+            if pts:
+                ax.errorbar([MEAN_DIAMETER / n + 0.004 for n, _ in pts],
+                            [m for _, (m, _, _) in pts],
+                            yerr=[0.0 if math.isnan(e) else e for _, (_, e, _) in pts],
+                            marker=marker, color="black", linestyle="none", capsize=3,
+                            label=label)
         ax.set_xlabel("node spacing h (mean diameter 1)")
         ax.set_title(LABELS[q], fontsize=10)
         ax.set_xlim(left=0)
@@ -361,7 +379,7 @@ def plot(rows):
 
 def markdown(rows):
     stats = ensembles(rows)
-    print("| D/h | safety | grains | runs | μ | μ top | μ bottom | p_wb | solid fraction | ATT |")
+    print("| D/h | safety | variant | runs | μ | μ top | μ bottom | p_wb | solid fraction | ATT |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     order = lambda kv: (kv[0][2] != "standard", kv[0][1] != DEFAULT_SAFETY, kv[0])
     for (n, s, v), st in sorted(stats.items(), key=order):
@@ -369,7 +387,7 @@ def markdown(rows):
         for q in QUANTITIES:
             if q in st:
                 m, e, _ = st[q]
-                cells.append(f"{m:.4g} ± {e:.2g}")
+                cells.append(f"{m:.4g}" if math.isnan(e) else f"{m:.4g} ± {e:.2g}")
             else:
                 cells.append("-")
         runs = max((v[2] for v in st.values()), default=0)
@@ -402,18 +420,26 @@ def markdown(rows):
                 d = safety[q].get((n, s))
                 cells.append("-" if d is None else f"{d[0]:+.3g} ± {d[1]:.2g} ({d[2]})")
             print(f"| {n:g} | {s:g} | " + " | ".join(cells) + " |")
-    fbar = {q: fbar_differences(rows, q) for q in QUANTITIES}
-    if any(fbar.values()):
+    for variant in VARIANTS:
+        diffs = {q: variant_differences(rows, q, variant) for q in QUANTITIES}
+        spacings = sorted({n for d in diffs.values() for n in d})
+        if not spacings:
+            continue
         print()
-        print(f"Paired differences F-bar - standard (safety {DEFAULT_SAFETY}), seed by seed:")
+        print(f"Paired differences {variant} - standard (safety {DEFAULT_SAFETY}), seed by seed:")
         print()
         print("| D/h | " + " | ".join(LABELS[q] for q in QUANTITIES) + " |")
         print("|---|" + "---|" * len(QUANTITIES))
-        for n in FBAR_SPACINGS:
+        for n in spacings:
             cells = []
             for q in QUANTITIES:
-                d = fbar[q].get(n)
-                cells.append("-" if d is None else f"{d[0]:+.3g} ± {d[1]:.2g} ({d[2]})")
+                d = diffs[q].get(n)
+                if d is None:
+                    cells.append("-")
+                elif d[2] == 1:
+                    cells.append(f"{d[0]:+.3g} (1)")
+                else:
+                    cells.append(f"{d[0]:+.3g} ± {d[1]:.2g} ({d[2]})")
             print(f"| {n:g} | " + " | ".join(cells) + " |")
 
 # The regression test's cell (tests/scenario/test_mu_discretization.cpp): the study's layer
@@ -499,9 +525,9 @@ def main():
         return
     if a.command == "run":
         os.makedirs(a.runs, exist_ok=True)
-        for n, s, seed, volumetric in cases(a.seeds):
-            if a.only in case_name(n, s, seed, volumetric):
-                run_case(os.path.abspath(a.bin), a.runs, n, s, seed, volumetric, a.threads)
+        for n, s, seed, variant in cases(a.seeds):
+            if a.only in case_name(n, s, seed, variant):
+                run_case(os.path.abspath(a.bin), a.runs, n, s, seed, variant, a.threads)
     rows = collect(a.runs, a.seeds)
     if a.command == "markdown":
         markdown(rows)
