@@ -24,6 +24,7 @@ void write_parameters(std::ostream& out, const ScenarioDef& s, const IntegratorC
       << "\nstep_tolerance = " << integrator.step_tolerance
       << "\nimex_tolerance = " << s.imex_tolerance
       << "\nimex_refactor_threshold = " << s.imex_refactor_threshold
+      << "\nimex_dense_factors = " << (s.imex_dense_factors ? "true" : "false")
       << "\n\n[output]\nseries_period = " << s.series_period
       << "\nfield_period = " << s.field_period << "\nfield_format = \""
       << (s.field_format == FieldFormat::ascii ? "ascii" : "binary")
@@ -90,7 +91,9 @@ std::string describe_viscous_solves(const ViscousSolveStatistics& st) {
        << " conjugate-gradient iterations ("
        << static_cast<double>(st.iterations) / static_cast<double>(st.solves) << " per solve), "
        << st.factorizations << " factorizations, " << st.reassemblies
-       << " reassemblies of the objective operator\n";
+       << " reassemblies of the objective operator";
+  if (st.dense_bodies > 0) note << "; dense factors for " << st.dense_bodies << " bodies";
+  note << "\n";
   return note.str();
 }
 

@@ -62,8 +62,10 @@ std::vector<double> run_settings(const ScenarioDef& s, const IntegratorChoice& i
                            static_cast<double>(s.reestimate_interval),
                            s.mass_scaling_step};
   // (Appended only when set, so that explicit runs keep their checkpoints bitwise.)
-  if (integrator.params.implicit_viscosity)
+  if (integrator.params.implicit_viscosity) {
     v.insert(v.end(), {1.0, s.imex_tolerance, s.imex_refactor_threshold});
+    if (!s.imex_dense_factors) v.push_back(-1.0);  // (only when off: earlier checkpoints stay)
+  }
   if (!s.contact_laws.empty()) {
     const ContactSettings c = contact_settings(s);
     v.insert(v.end(), {c.cutoff, c.skin});

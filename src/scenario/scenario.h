@@ -102,6 +102,9 @@ struct ScenarioDef {
   // The objective model's preconditioner is rebuilt when a grain's stretch has moved by more
   // than this since it was built (solver/implicit_viscosity.h).
   double imex_refactor_threshold = 0.1;
+  // Dense factors for the objective model's grains (solver/implicit_viscosity.h); false: sparse
+  // factors for every body, the arithmetic of the versions before them.
+  bool imex_dense_factors = true;
   // [output]
   std::filesystem::path output_root = "out";
   double series_period = 0.0;  // time between rows of series.csv (0: 1/200 of duration)

@@ -31,7 +31,16 @@
 //                        delta), when h changes, and at the first step after a checkpoint
 //                        (refresh_preconditioners), so that a resumed run repeats the same
 //                        factors as an uninterrupted one.
-// Eigen's SimplicialLDLT (AMD ordering) factors A0 and A_ref; no hand-written factorization.
+// Eigen factors A0 and A_ref; no hand-written factorization. A grain's factor is nearly dense:
+// each node couples with the ~12 of its MLS supports, and the fill of a sparse LDL^T (AMD
+// ordering) of a 73-node grain is 59% of the lower triangle. Objective-model bodies whose sparse
+// factor would be over half full (at most `dense_factor_limit` DOFs) keep a dense LDL^T
+// (Eigen::LDLT, vectorized triangular solves) instead: on the 60 grains of
+// bench/scenes/imex-cell.toml, 6.6 against 10.4 us per solve and 164 against 194 us per
+// factorization (bench/results/debian12-2core/dense_factor.csv), and the objective step 8-24%
+// cheaper. The models that solve once per step keep SimplicialLDLT: their factor comes from
+// memory, and the dense one made their step 13-29% dearer. Either solves to round-off; results
+// differ from the other's in the last bits (dense_factor_limit = 0: sparse everywhere).
 //
 // The force the update applied is F* = M dv / h (exactly what moved the velocities, whatever
 // the solve's residual), and the viscous force booked by the ledger is f_v* = f_v(v_n-1/2) +
@@ -39,12 +48,14 @@
 //
 // Bodies with driven nodes (the back faces of deformable strips) keep the explicit viscous
 // update: their driven components would be constraints of the solve.
+#include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <memory>
 #include <vector>
 
 #include "model/model.h"
+#include "solver/integrator_params.h"
 
 namespace sg {
 
@@ -57,14 +68,17 @@ struct ViscousSolveStatistics {
   long iterations = 0;      // conjugate-gradient iterations (objective model)
   long factorizations = 0;  // numeric factorizations of A0 or A_ref
   long reassemblies = 0;    // objective model: assemblies of C(F_ref) at a new reference
+  long dense_bodies = 0;    // bodies whose factor is dense
 };
 
 class ImplicitViscosity {
  public:
   // `tolerance`: relative residual |r| / |h F| at which conjugate gradients stop.
-  // `refactor_threshold`: the objective model's delta (above).
+  // `refactor_threshold`: the objective model's delta (above). `dense_factor_limit`: the largest
+  // body (in DOFs) whose factor may be dense (above; 0: none).
   ImplicitViscosity(const Model& model, double tolerance,
-                    double refactor_threshold = kDefaultRefactorThreshold);
+                    double refactor_threshold = kDefaultRefactorThreshold,
+                    int dense_factor_limit = IntegratorParams::kDefaultDenseFactorLimit);
   static constexpr double kDefaultRefactorThreshold = 0.1;
 
   // The objective model's next solve of every body assembles and factors its operator anew.
@@ -94,7 +108,10 @@ class ImplicitViscosity {
     // alpha K0, or C(F_ref) for the objective model: DOF 2 i (x) and 2 i + 1 (y) of node i
     SparseMatrix damping;
     Eigen::VectorXd mass;                        // lumped mass per DOF
-    Eigen::SimplicialLDLT<SparseMatrix> factor;  // of M + h/2 damping
+    Eigen::SimplicialLDLT<SparseMatrix> factor;  // of M + h/2 damping (sparse bodies)
+    bool dense = false;                          // the factor is dense_factor instead
+    Eigen::LDLT<Eigen::MatrixXd> dense_factor;
+    Eigen::MatrixXd dense_matrix;  // scratch: M + h/2 damping before factoring
     double factor_h = 0.0;
     std::vector<Mat2> gradients;            // objective model: F per Gauss point
     std::vector<Mat2> reference_gradients;  // F_ref, empty until the first assembly
@@ -112,6 +129,8 @@ class ImplicitViscosity {
   std::vector<Mat2*> gradient_outputs_;
 
   void factorize(BodySystem& system, double h);
+  // Whether `system`'s body (its operator's pattern `a`) gets a dense factor.
+  static bool prefers_dense_factor(BodySystem& system, const SparseMatrix& a, int limit);
   // Objective model: C(F_ref) assembled anew (and factored) when refresh_preconditioners()
   // asked for it or the stretch has moved on by more than the threshold; true if it was.
   bool update_reference(const Model& model, BodySystem& system, const Mat2& rotation, double h);

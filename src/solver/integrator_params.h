@@ -1,5 +1,6 @@
 #pragma once
-// The time integrator's settings ([time] integrator, imex_tolerance, imex_refactor_threshold):
+// The time integrator's settings ([time] integrator, imex_tolerance, imex_refactor_threshold,
+// imex_factors):
 // how the stepper treats the bulk damping, explicitly (central difference, the viscous force at
 // v_n-1/2) or implicitly per damped deformable body (IMEX, solver/implicit_viscosity.h). A
 // parameter of the step, not of the model: the stepper, the stable step estimate and mass
@@ -11,10 +12,15 @@ struct IntegratorParams {
   bool implicit_viscosity = false;       // IMEX; false: explicit
   double imex_tolerance = 1e-5;          // relative residual of the iterative solves (scenario.md)
   double imex_refactor_threshold = 0.1;  // objective model's preconditioner (implicit_viscosity.h)
+  // Dense factors for the bodies whose sparse factor would be over half dense (grains), up to
+  // this many DOFs; 0: sparse factors for every body (the arithmetic of versions before them).
+  int imex_dense_factor_limit = kDefaultDenseFactorLimit;
+  static constexpr int kDefaultDenseFactorLimit = 1500;
 
   static IntegratorParams explicit_integrator() { return {}; }
-  static IntegratorParams imex(double tolerance = 1e-5, double refactor_threshold = 0.1) {
-    return {true, tolerance, refactor_threshold};
+  static IntegratorParams imex(double tolerance = 1e-5, double refactor_threshold = 0.1,
+                               int dense_factor_limit = kDefaultDenseFactorLimit) {
+    return {true, tolerance, refactor_threshold, dense_factor_limit};
   }
   const char* name() const { return implicit_viscosity ? "imex" : "explicit"; }
 };

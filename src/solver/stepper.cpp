@@ -10,7 +10,8 @@ Stepper::Stepper(Model& model, ContactSystem* contacts, const IntegratorParams& 
     : model_(model), contacts_(contacts), integrator_(integrator) {
   if (integrator.implicit_viscosity)
     implicit_ = std::make_unique<ImplicitViscosity>(model, integrator.imex_tolerance,
-                                                    integrator.imex_refactor_threshold);
+                                                    integrator.imex_refactor_threshold,
+                                                    integrator.imex_dense_factor_limit);
 }
 
 Stepper::~Stepper() = default;
