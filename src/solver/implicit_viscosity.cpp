@@ -190,7 +190,6 @@ ImplicitViscosity::ImplicitViscosity(const Model& model, double tolerance,
     pattern.diagonal() += s.mass;
     s.factor.analyzePattern(pattern);
     s.dense = prefers_dense_factor(s, pattern, dense_factor_limit);
-    s.statistics.dense_bodies = s.dense ? 1 : 0;
   }
 }
 
@@ -202,7 +201,7 @@ bool ImplicitViscosity::prefers_dense_factor(BodySystem& s, const SparseMatrix& 
   // memory, where the dense one (168 kB for a 73-node grain) costs more than the sparse (77 kB).
   if (s.model != DampingModel::objective) return false;
   // The fill of the sparse factor, from one factorization of a matrix of the pattern (M + K0
-  // is one: symmetric positive definite).
+  // is one: symmetric positive definite; Eigen gives L only once factored).
   s.factor.factorize(a);
   if (s.factor.info() != Eigen::Success) return false;
   const double fill = static_cast<double>(s.factor.matrixL().nestedExpression().nonZeros());
@@ -219,8 +218,7 @@ void ImplicitViscosity::factorize(BodySystem& s, double h) {
   a.diagonal() += s.mass;
   bool factored = false;
   if (s.dense) {
-    s.dense_matrix = a;
-    s.dense_factor.compute(s.dense_matrix);
+    s.dense_factor.compute(Eigen::MatrixXd(a));
     factored = s.dense_factor.info() == Eigen::Success && s.dense_factor.isPositive();
   } else {
     s.factor.factorize(a);
@@ -408,7 +406,7 @@ ViscousSolveStatistics ImplicitViscosity::statistics() const {
     total.iterations += s->statistics.iterations;
     total.factorizations += s->statistics.factorizations;
     total.reassemblies += s->statistics.reassemblies;
-    total.dense_bodies += s->statistics.dense_bodies;
+    total.dense_bodies += s->dense ? 1 : 0;
   }
   return total;
 }

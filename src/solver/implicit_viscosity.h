@@ -111,7 +111,6 @@ class ImplicitViscosity {
     Eigen::SimplicialLDLT<SparseMatrix> factor;  // of M + h/2 damping (sparse bodies)
     bool dense = false;                          // the factor is dense_factor instead
     Eigen::LDLT<Eigen::MatrixXd> dense_factor;
-    Eigen::MatrixXd dense_matrix;  // scratch: M + h/2 damping before factoring
     double factor_h = 0.0;
     std::vector<Mat2> gradients;            // objective model: F per Gauss point
     std::vector<Mat2> reference_gradients;  // F_ref, empty until the first assembly

@@ -1,6 +1,6 @@
 #pragma once
 // The time integrator's settings ([time] integrator, imex_tolerance, imex_refactor_threshold,
-// imex_factors):
+// imex_dense_factors):
 // how the stepper treats the bulk damping, explicitly (central difference, the viscous force at
 // v_n-1/2) or implicitly per damped deformable body (IMEX, solver/implicit_viscosity.h). A
 // parameter of the step, not of the model: the stepper, the stable step estimate and mass
