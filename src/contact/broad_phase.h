@@ -112,7 +112,11 @@ class BroadPhase {
   // Cell grid, rebuilt with the list: segments of cell c are cell_segments_[cell_start_[c]
   // .. cell_start_[c+1]) in increasing index order.
   std::vector<int> cell_start_, cell_segments_;
-  std::vector<int> scratch_;  // candidate segments of one node
+  // The node queries of build(), in kQueryChunks ranges of nodes: each range's candidates,
+  // and its scratch (the candidate segments of one node).
+  static constexpr std::size_t kQueryChunks = 64;
+  std::vector<std::vector<ContactCandidate>> chunk_candidates_;
+  std::vector<std::vector<int>> chunk_scratch_;
 };
 
 }  // namespace sg

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/parallel.h"
 #include "solver/implicit_viscosity.h"
 #include "solver/stepper.h"
 
@@ -214,7 +215,7 @@ void Stepper::update_node_positions(double dt) {
   NodeState& n = model_.nodes;
   const int body_count = static_cast<int>(model_.bodies.size());
   body_probes_.assign(model_.bodies.size(), 0.0);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n.ux.size() >= kParallelStreamingNodes)
   for (int b = 0; b < body_count; ++b) {
     const Body& body = model_.body(b);
     // A probe that becomes NaN iff some updated value is not finite (0 * inf = NaN).

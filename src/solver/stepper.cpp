@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/parallel.h"
 
 namespace sg {
 
@@ -49,12 +50,13 @@ void Stepper::step(double dt) {
 
 void Stepper::apply_external_forces() {
   // With lumped (row-sum) masses, the consistent gravity load on the parameter I is
-  // integral(N_I rho g) = m_I g. Loops over nodes run per body in parallel: each body writes
-  // its own node range, so the result does not depend on the number of threads.
+  // integral(N_I rho g) = m_I g. Loops over nodes run per body, in parallel on large models
+  // (core/parallel.h): each body writes its own node range, so the result does not depend on
+  // the number of threads.
   NodeState& n = model_.nodes;
   const double gx = model_.gravity.x(), gy = model_.gravity.y();
   const int body_count = static_cast<int>(model_.bodies.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n.mass.size() >= kParallelStreamingNodes)
   for (int b = 0; b < body_count; ++b) {
     const Body& body = model_.body(b);
     // Gravity acts on the physical mass (mass scaling changes the inertia only).
