@@ -1,19 +1,23 @@
 // softgrain: the command line. Thin: parses options, dispatches to the subcommands
 // (app/commands/*.cpp), prints errors once.
 #include <omp.h>
+#include <sched.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <new>
 #include <stdexcept>
+#include <string>
 
 #include "command_registry.h"
 #include "core/error.h"
 #include "core/nearest_name.h"
 #include "core/version.h"
+#include "core/wait_policy.h"
 
 namespace sg::app {
 
@@ -26,16 +30,53 @@ void apply_threads(const GlobalOptions& options) {
   if (options.threads > 0) omp_set_num_threads(options.threads);
 }
 
-// OpenMP threads waiting at a barrier spin by default (libgomp spins for a while before it
-// sleeps). When several runs share the cores (two runs of 2 threads on 2 cores), the spinning
-// threads of one take the cores the other needs: the issue #15 measurement was 62 instead
-// of ~700 steps/s. Passive waiting (threads sleep at once) costs a lone run little and makes
-// two runs share the cores fairly (README, "Several runs on one machine"). libgomp reads
-// OMP_WAIT_POLICY when it is loaded, before main: unless the user chose a policy, the
-// program sets PASSIVE and executes itself again, once (if that fails it goes on as is).
-void choose_omp_wait_policy(char** argv) {
-  if (std::getenv("OMP_WAIT_POLICY")) return;
-  setenv("OMP_WAIT_POLICY", "PASSIVE", 1);
+// How the OpenMP threads wait at barriers (core/wait_policy.h): libgomp reads the variables
+// when it is loaded, before main, so unless the user chose (OMP_WAIT_POLICY or
+// GOMP_SPINCOUNT), the program sets them and executes itself again, once (if that fails it
+// goes on as is). The choice needs the subcommand and the thread count before CLI11 has
+// parsed them: the first word of the command line that is neither an option nor the value
+// of --threads, and --threads N (--threads=N), else the cores the process may run on.
+// The processes (threads) ready to run on the machine besides this one: the fewest of five
+// readings of /proc/loadavg's "running/total" field 2 ms apart (a process that only passes by
+// is not a competitor); unknown: as many as there are cores.
+int other_runnable() {
+  int fewest = -1;
+  for (int reading = 0; reading < 5; ++reading) {
+    if (reading > 0) usleep(2000);
+    std::ifstream in("/proc/loadavg");
+    double load1 = 0, load5 = 0, load15 = 0;
+    int running = 0;
+    if (!(in >> load1 >> load5 >> load15 >> running)) continue;
+    if (fewest < 0 || running < fewest) fewest = running;
+  }
+  if (fewest < 0) return static_cast<int>(sysconf(_SC_NPROCESSORS_ONLN));
+  return std::max(0, fewest - 1);  // this process is one of them
+}
+
+void choose_omp_wait_policy(int argc, char** argv) {
+  if (std::getenv("OMP_WAIT_POLICY") || std::getenv("GOMP_SPINCOUNT")) return;
+  std::string subcommand;
+  int threads = 0;
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word == "--threads" && i + 1 < argc)
+      threads = std::atoi(argv[++i]);
+    else if (word.rfind("--threads=", 0) == 0)
+      threads = std::atoi(word.c_str() + 10);
+    else if (subcommand.empty() && !word.empty() && word.front() != '-')
+      subcommand = word;
+  }
+  cpu_set_t allowed;
+  const int usable = sched_getaffinity(0, sizeof allowed, &allowed) == 0 ? CPU_COUNT(&allowed) : 1;
+  if (threads <= 0) threads = usable;
+  const long cores = sysconf(_SC_NPROCESSORS_ONLN);
+  const sg::WaitPolicyChoice choice =
+      sg::choose_wait_policy(subcommand, threads, static_cast<int>(cores), other_runnable());
+  if (choice.spin)
+    setenv("GOMP_SPINCOUNT", std::to_string(sg::kBarrierSpinCount).c_str(), 1);
+  else
+    setenv("OMP_WAIT_POLICY", "PASSIVE", 1);
+  setenv(sg::kWaitPolicyReasonVariable, choice.reason.c_str(), 1);
   execv("/proc/self/exe", argv);
 }
 
@@ -61,7 +102,7 @@ int report_parse_error(CLI::App& app, const CLI::ParseError& e) {
 
 int main(int argc, char** argv) {
   using namespace sg::app;
-  choose_omp_wait_policy(argv);
+  choose_omp_wait_policy(argc, argv);
   CLI::App app{
       "softgrain: 2D simulation of rigid and highly deformable grains (multibody meshfree)"};
   app.footer(

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "core/exit_status.h"
+#include "core/wait_policy.h"
 
 namespace sg {
 namespace {
@@ -63,7 +64,14 @@ std::string slurm_array_script(const CampaignDef& campaign, const SlurmSettings&
   s << "set -uo pipefail\n"
     << "cd \"${SLURM_SUBMIT_DIR:-.}\"\n"
     << "SOFTGRAIN=${SOFTGRAIN:-" << shell_quoted(spec.executable.string()) << "}\n"
-    << "threads=${SLURM_CPUS_PER_TASK:-" << spec.threads << "}\n"
+    << "threads=${SLURM_CPUS_PER_TASK:-" << spec.threads
+    << "}\n"
+    // The job inherits the environment of the sweep that submitted it, where softgrain chose
+    // to sleep at barriers (core/wait_policy.h): the run chooses again on its own cores. A
+    // choice the user made (without softgrain's reason beside it) is kept.
+    << "if [ -n \"${" << kWaitPolicyReasonVariable << ":-}\" ]; then\n"
+    << "  unset OMP_WAIT_POLICY GOMP_SPINCOUNT " << kWaitPolicyReasonVariable << "\n"
+    << "fi\n"
     << "task=\"${SLURM_ARRAY_JOB_ID:-?}_${SLURM_ARRAY_TASK_ID}\"\n"
     << "id=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" runs.txt)\n"
     << "if [ -z \"$id\" ]; then\n"

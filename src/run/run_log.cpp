@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/version.h"
+#include "core/wait_policy.h"
 #include "io/atomic_file.h"
 #include "model/force_kernel.h"
 
@@ -16,7 +17,8 @@ namespace {
 void write_parameters(std::ostream& out, const ScenarioDef& s, const IntegratorChoice& integrator) {
   out << "softgrain run log\nsoftgrain = \"" << softgrain_version() << "\"\ncommit = \""
       << softgrain_commit() << "\"\nscenario = " << s.source.string() << "\nname = " << s.name
-      << "\nthreads = " << omp_get_max_threads() << "\nforce_kernel = \"" << force_kernel().isa
+      << "\nthreads = " << omp_get_max_threads() << "\nomp_wait = \"" << current_wait_policy()
+      << "\"  # " << wait_policy_reason() << "\nforce_kernel = \"" << force_kernel().isa
       << "\"\n\n[time]\nduration = " << s.duration << "\nsafety = " << s.time_step_safety
       << "\nfixed_step = " << s.fixed_time_step << "\nmass_scaling_step = " << s.mass_scaling_step
       << "\nintegrator = \"" << integrator.params.name() << "\""

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/wait_policy.h"
 #include "io/run_directory.h"
 #include "model/force_kernel.h"
 #include "run/checkpoint_output.h"
@@ -76,7 +77,8 @@ void announce_start(std::ostream& out, const Simulation& sim, bool resumed) {
   out << "softgrain: " << sim.model.bodies.size() << " bodies, " << sim.model.node_count()
       << " nodes, " << sim.model.gauss_point_count() << " Gauss points; dt = " << sim.first_dt
       << (sim.first_estimate.damping_limited ? " (damping-limited)" : "") << "; "
-      << omp_get_max_threads() << " threads, " << force_kernel().isa << " force kernel"
+      << omp_get_max_threads() << " threads (barriers: " << current_wait_policy() << "), "
+      << force_kernel().isa << " force kernel"
       << (resumed ? "; resumed at step " + std::to_string(sim.solver.state().step) : "") << "\n";
 }
 

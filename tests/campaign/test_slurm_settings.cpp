@@ -4,6 +4,7 @@
 // in tests/slurm/.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -15,6 +16,7 @@
 #include "campaign/slurm_script.h"
 #include "campaign/slurm_settings.h"
 #include "core/error.h"
+#include "core/wait_policy.h"
 #include "scenes/scenario_files.h"
 #include "scenes/tiny_scenario.h"
 
@@ -197,6 +199,36 @@ extra = ["--constraint=avx2"]
   EXPECT_NE(s.find("[ $analyze_status -eq 0 ] || [ $analyze_status -eq 3 ] || failed analyze"),
             std::string::npos)
       << s;
+}
+
+// The job inherits the environment of the sweep that submitted it: a wait policy softgrain
+// chose there (with its reason beside it) is dropped so that the run chooses on its own
+// cores; one the user set is kept (core/wait_policy.h).
+TEST(SlurmScript, TheRunChoosesItsWaitPolicyAgainUnlessTheUserChoseIt) {
+  const CampaignDef c = load_campaign(campaign_with(""));
+  SlurmScriptSpec spec;
+  spec.executable = "softgrain";
+  const std::string s = slurm_array_script(c, c.slurm, spec);
+  const std::string reason = kWaitPolicyReasonVariable;
+  const auto begin = s.find("if [ -n \"${" + reason);
+  ASSERT_NE(begin, std::string::npos) << s;
+  const std::string snippet = s.substr(begin, s.find("fi\n", begin) + 3 - begin);
+  const auto policy_after = [&](const std::string& environment) {
+    const fs::path file = fs::temp_directory_path() / "softgrain_wait_policy_snippet.sh";
+    std::ofstream(file) << snippet << "echo \"[${OMP_WAIT_POLICY:-}|${GOMP_SPINCOUNT:-}]\"\n";
+    FILE* pipe = ::popen(("env -u OMP_WAIT_POLICY -u GOMP_SPINCOUNT -u " + reason + " " +
+                          environment + " bash " + file.string())
+                             .c_str(),
+                         "r");
+    std::string out(64, '\0');
+    out.resize(std::fread(out.data(), 1, out.size(), pipe));
+    ::pclose(pipe);
+    fs::remove(file);
+    return out;
+  };
+  EXPECT_EQ(policy_after("OMP_WAIT_POLICY=PASSIVE " + reason + "=sweep"), "[|]\n");
+  EXPECT_EQ(policy_after("OMP_WAIT_POLICY=PASSIVE"), "[PASSIVE|]\n");
+  EXPECT_EQ(policy_after("GOMP_SPINCOUNT=100"), "[|100]\n");
 }
 
 TEST(SlurmCommands, ParsesSbatchSqueueAndSacct) {
