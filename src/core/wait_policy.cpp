@@ -8,8 +8,9 @@ namespace sg {
 WaitPolicyChoice choose_wait_policy(std::string_view subcommand, int threads, int cores,
                                     int other_runnable) {
   std::ostringstream why;
-  if (subcommand != "run") {
-    why << "'" << subcommand << "' sleeps at barriers (only a run spins)";
+  // `info` times steps to predict a run's cost: it waits as the run would.
+  if (subcommand != "run" && subcommand != "info") {
+    why << "'" << subcommand << "' and what it starts sleep at barriers (only a lone run spins)";
     return {false, why.str()};
   }
   if (threads <= 1) return {false, "one thread: no barrier to wait at"};

@@ -35,7 +35,9 @@ TEST(WaitPolicy, OneThreadAndOtherSubcommandsSleep) {
   EXPECT_FALSE(choose_wait_policy("run", 1, 2, 0).spin);
   // A sweep's runs inherit its choice: several runs share the cores.
   EXPECT_FALSE(choose_wait_policy("sweep", 2, 2, 0).spin);
-  EXPECT_FALSE(choose_wait_policy("info", 2, 2, 0).spin);
+  EXPECT_FALSE(choose_wait_policy("analyze", 2, 2, 0).spin);
+  // info times steps to predict a run's cost: it waits as a run would.
+  EXPECT_TRUE(choose_wait_policy("info", 2, 2, 0).spin);
   EXPECT_FALSE(choose_wait_policy("", 2, 2, 0).spin);
 }
 
