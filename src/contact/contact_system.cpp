@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "core/parallel.h"
 #include "model/kinematics.h"
 
 namespace sg {
@@ -99,9 +100,12 @@ void ContactSystem::update_geometry(const Model& model) {
   segment_body_.resize(n);
   tributary_.resize(n);
   // Segment k runs from contour point k to the next point of its body (global numbering:
-  // a body's segments are [contour_begin, contour_end), like its points).
-  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-    const Body& body = model.bodies[b];
+  // a body's segments are [contour_begin, contour_end), like its points). Each body writes
+  // its own range: in parallel, on models with enough points to pay for a parallel loop.
+  const auto body_count = static_cast<std::ptrdiff_t>(model.bodies.size());
+#pragma omp parallel for schedule(static) if (n >= kParallelContourPoints)
+  for (std::ptrdiff_t b = 0; b < body_count; ++b) {
+    const Body& body = model.bodies[static_cast<std::size_t>(b)];
     const ContourView view = contour_view(body, positions_);
     for (int s = 0; s < body.contour_count(); ++s) {
       const auto k = static_cast<std::size_t>(body.contour_begin + s);
@@ -334,30 +338,63 @@ void ContactSystem::evaluate_group(const Model& model, std::span<const ContactCa
 void ContactSystem::add_force_at_point(Model& model, int point, const Vec2& f, const Vec2& at) {
   const BodyId b = node_body_[static_cast<std::size_t>(point)];
   const Body& body = model.body(b);
-  if (body.kind == BodyKind::rigid) {
-    const auto r = static_cast<std::size_t>(body.rigid_index);
-    model.rigid.fx[r] += f.x();
-    model.rigid.fy[r] += f.y();
-    Vec2 arm = at - Vec2(model.rigid.x[r], model.rigid.y[r]);
-    if (model.periodic_x) {
-      const double period = model.x_max - model.x_min;
-      arm.x() -= period * std::round(arm.x() / period);
+  if (body.kind != BodyKind::rigid) {
+    point_forces_.push_back({point, f});  // spread to the nodes by spread_point_forces
+    return;
+  }
+  const auto r = static_cast<std::size_t>(body.rigid_index);
+  model.rigid.fx[r] += f.x();
+  model.rigid.fy[r] += f.y();
+  Vec2 arm = at - Vec2(model.rigid.x[r], model.rigid.y[r]);
+  if (model.periodic_x) {
+    const double period = model.x_max - model.x_min;
+    arm.x() -= period * std::round(arm.x() / period);
+  }
+  model.rigid.torque[r] += cross(arm, f);
+}
+
+void ContactSystem::spread_point_forces(Model& model) {
+  // The forces on deformable bodies' contour points, in scatter order, sorted by body with a
+  // stable counting sort: each body then receives its forces in the order the serial scatter
+  // gave them, and a node's sum is the same bit for bit, whatever the thread count. Bodies
+  // are independent (a contour point's row holds nodes of its own body only): in parallel.
+  const std::size_t body_count = model.bodies.size();
+  const auto body_of = [&](const PointForce& pf) {
+    return static_cast<std::size_t>(node_body_[static_cast<std::size_t>(pf.point)]);
+  };
+  body_force_start_.assign(body_count + 1, 0);
+  for (const PointForce& pf : point_forces_)
+    ++body_force_start_[body_of(pf) + 1];
+  for (std::size_t b = 0; b < body_count; ++b)
+    body_force_start_[b + 1] += body_force_start_[b];
+  sorted_point_forces_.resize(point_forces_.size());
+  body_force_fill_.assign(body_force_start_.begin(), body_force_start_.end() - 1);
+  for (const PointForce& pf : point_forces_)
+    sorted_point_forces_[body_force_fill_[body_of(pf)]++] = pf;
+  const auto bodies = static_cast<std::ptrdiff_t>(body_count);
+#pragma omp parallel for schedule(dynamic, 16)
+  for (std::ptrdiff_t i = 0; i < bodies; ++i) {
+    const auto b = static_cast<std::size_t>(i);
+    const Body& body = model.bodies[b];
+    double moment = 0.0;
+    for (std::size_t k = body_force_start_[b]; k < body_force_start_[b + 1]; ++k) {
+      const PointForce& pf = sorted_point_forces_[k];
+      moment += add_contour_node_force(
+          model, body, body.node_begin + (pf.point - body.contour_begin), pf.force, rotations_[b]);
     }
-    model.rigid.torque[r] += cross(arm, f);
-  } else {
-    rotation_moment_[static_cast<std::size_t>(b)] +=
-        add_contour_node_force(model, body, body.node_begin + (point - body.contour_begin), f,
-                               rotations_[static_cast<std::size_t>(b)]);
+    // The moments of the contour points' hat offsets, spread once per body (kinematics.h).
+    add_body_rotation_moment(model, body, moment, rotations_[b]);
   }
 }
 
 ContactStepResult ContactSystem::scatter_forces(Model& model) {
-  // Serial scatter in candidate order: deterministic whatever the thread count.
+  // Serial in candidate order (deterministic whatever the thread count), but for the spread
+  // of the deformable bodies' point forces to their nodes (spread_point_forces).
   ContactStepResult result;
   std::vector<ContactHistoryEntry>& next = next_histories_;
   next.clear();
   records_.clear();
-  rotation_moment_.assign(model.bodies.size(), 0.0);
+  point_forces_.clear();
   for (std::size_t g = 0; g < groups_.size(); ++g) {
     const ContactRecord& r = results_[g];
     if (!r.active) continue;
@@ -378,9 +415,7 @@ ContactStepResult ContactSystem::scatter_forces(Model& model) {
     if (new_history_[g].active || new_history_[g].stored_slip != 0.0)
       next.push_back({r.slave_point, r.master_body, new_history_[g]});
   }
-  // The moments of the contour points' hat offsets, spread once per body (kinematics.h).
-  for (std::size_t b = 0; b < model.bodies.size(); ++b)
-    add_body_rotation_moment(model, model.bodies[b], rotation_moment_[b], rotations_[b]);
+  spread_point_forces(model);
   histories_.swap(next);
   return result;
 }

@@ -154,8 +154,15 @@ class ContactSystem {
   std::vector<double> stored_;
   std::vector<ContactHistoryEntry> next_histories_;
   std::vector<BodyRotation> rotations_;  // of each body at this evaluation (kinematics.h)
-  std::vector<double> rotation_moment_;  // per body: sum of its contour points' moments
-  std::vector<int> group_history_;       // per group: its entry in histories_, -1: none (scratch)
+  // The scatter's forces on deformable bodies' contour points, in scatter order, then sorted by
+  // body (body_force_start_: each body's range; body_force_fill_: scratch).
+  struct PointForce {
+    int point = 0;
+    Vec2 force = Vec2::Zero();
+  };
+  std::vector<PointForce> point_forces_, sorted_point_forces_;
+  std::vector<std::size_t> body_force_start_, body_force_fill_;
+  std::vector<int> group_history_;  // per group: its entry in histories_, -1: none (scratch)
   // Contact damping and bond formation (contact_law.h): the initial tributary length L0 of
   // each contour point, each body's mass (filled at the first evaluation when a law is
   // damped).
@@ -190,9 +197,12 @@ class ContactSystem {
   // Slip increment ds of the slave point relative to the master since the last evaluation.
   double slip_increment(const Model& model, int slave, const Body& master_body,
                         const GroupProjection& projection) const;
-  // Adds force f, applied at `at`, to the contour point's body (rigid: force and torque;
-  // deformable: its MLS parameters).
+  // Adds force f, applied at `at`, to the contour point's body: a rigid body's force and
+  // torque at once, a deformable body's point forces for spread_point_forces.
   void add_force_at_point(Model& model, int point, const Vec2& f, const Vec2& at);
+  // The deformable bodies' point forces onto their MLS parameters, with the moments of their
+  // hat offsets (kinematics.h), body by body in parallel.
+  void spread_point_forces(Model& model);
 };
 
 }  // namespace sg

@@ -15,6 +15,9 @@ namespace sg {
 // position update of 4,366 nodes takes a few; the gravity and position phases were 6% of
 // an imex step of the 60-grain cell on 2 threads, 0.5% on 1.
 inline constexpr std::size_t kParallelStreamingNodes = 100000;
+// The same for the contour geometry of the contacts (segments and tributary lengths of every
+// contour point, a few dozen operations each).
+inline constexpr std::size_t kParallelContourPoints = 10000;
 
 template <typename Body>
 void parallel_for(int count, Body&& body) {
