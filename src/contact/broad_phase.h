@@ -110,8 +110,8 @@ class BroadPhase {
   // Positions at the last build (for the skin criterion).
   std::vector<Vec2> built_nodes_, built_segment_start_, built_segment_end_;
   // Cell grid, rebuilt with the list: segments of cell c are cell_segments_[cell_start_[c]
-  // .. cell_start_[c+1]) in increasing index order.
-  std::vector<int> cell_start_, cell_segments_;
+  // .. cell_start_[c+1]) in increasing index order (cell_fill_: scratch of the binning).
+  std::vector<int> cell_start_, cell_segments_, cell_fill_;
   // The node queries of build(), in kQueryChunks ranges of nodes: each range's candidates,
   // and its scratch (the candidate segments of one node).
   static constexpr std::size_t kQueryChunks = 64;
