@@ -30,12 +30,6 @@ void apply_threads(const GlobalOptions& options) {
   if (options.threads > 0) omp_set_num_threads(options.threads);
 }
 
-// How the OpenMP threads wait at barriers (core/wait_policy.h): libgomp reads the variables
-// when it is loaded, before main, so unless the user chose (OMP_WAIT_POLICY or
-// GOMP_SPINCOUNT), the program sets them and executes itself again, once (if that fails it
-// goes on as is). The choice needs the subcommand and the thread count before CLI11 has
-// parsed them: the first word of the command line that is neither an option nor the value
-// of --threads, and --threads N (--threads=N), else the cores the process may run on.
 // The processes (threads) ready to run on the machine besides this one: the fewest of five
 // readings of /proc/loadavg's "running/total" field 2 ms apart (a process that only passes by
 // is not a competitor); unknown: as many as there are cores.
@@ -53,6 +47,12 @@ int other_runnable() {
   return std::max(0, fewest - 1);  // this process is one of them
 }
 
+// How the OpenMP threads wait at barriers (core/wait_policy.h): libgomp reads the variables
+// when it is loaded, before main, so unless the user chose (OMP_WAIT_POLICY or
+// GOMP_SPINCOUNT), the program sets them and executes itself again, once (if that fails it
+// goes on as is). The choice needs the subcommand and the thread count before CLI11 has
+// parsed them: the first word of the command line that is neither an option nor the value
+// of --threads, and --threads N (--threads=N), else the cores the process may run on.
 void choose_omp_wait_policy(int argc, char** argv) {
   if (std::getenv("OMP_WAIT_POLICY") || std::getenv("GOMP_SPINCOUNT")) return;
   std::string subcommand;

@@ -64,12 +64,11 @@ std::string slurm_array_script(const CampaignDef& campaign, const SlurmSettings&
   s << "set -uo pipefail\n"
     << "cd \"${SLURM_SUBMIT_DIR:-.}\"\n"
     << "SOFTGRAIN=${SOFTGRAIN:-" << shell_quoted(spec.executable.string()) << "}\n"
-    << "threads=${SLURM_CPUS_PER_TASK:-" << spec.threads
-    << "}\n"
-    // The job inherits the environment of the sweep that submitted it, where softgrain chose
-    // to sleep at barriers (core/wait_policy.h): the run chooses again on its own cores. A
-    // choice the user made (without softgrain's reason beside it) is kept.
-    << "if [ -n \"${" << kWaitPolicyReasonVariable << ":-}\" ]; then\n"
+    << "threads=${SLURM_CPUS_PER_TASK:-" << spec.threads << "}\n";
+  // The job inherits the environment of the sweep that submitted it, where softgrain chose to
+  // sleep at barriers (core/wait_policy.h): the run chooses again on its own cores. A choice
+  // the user made (without softgrain's reason beside it) is kept.
+  s << "if [ -n \"${" << kWaitPolicyReasonVariable << ":-}\" ]; then\n"
     << "  unset OMP_WAIT_POLICY GOMP_SPINCOUNT " << kWaitPolicyReasonVariable << "\n"
     << "fi\n"
     << "task=\"${SLURM_ARRAY_JOB_ID:-?}_${SLURM_ARRAY_TASK_ID}\"\n"

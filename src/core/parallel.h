@@ -10,7 +10,7 @@ namespace sg {
 
 // Loops that stream a few numbers per node (gravity, the position update) run in parallel
 // only on models of at least this many nodes. A parallel region costs more than such a
-// loop on fewer: waking the sleeping threads (the passive wait policy, app/main.cpp) took
+// loop on fewer: waking sleeping threads (the passive wait policy, core/wait_policy.h) took
 // about 40 us per region on the 2-core machine of bench/results/debian12-2core, where the
 // position update of 4,366 nodes takes a few; the gravity and position phases were 6% of
 // an imex step of the 60-grain cell on 2 threads, 0.5% on 1.

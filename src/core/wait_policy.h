@@ -15,12 +15,11 @@
 //
 // So a process spins only where it would not take a core from another: a `run` (the one
 // subcommand whose loops are short and many; and `info`, which times steps to predict a run's
-// cost), on more than one thread, when the processes
-// ready to run on the machine at its start leave a core per thread. (The load average would
-// not do: it remembers the previous run of a script for minutes.) Everything else sleeps, and
-// so do the runs a `sweep` starts (they inherit its choice). A choice the user made in the
-// environment (OMP_WAIT_POLICY or GOMP_SPINCOUNT) is kept. The wait policy changes the time a
-// run takes, never its results.
+// cost), on more than one thread, when the processes ready to run on the machine at its start
+// leave a core per thread. (The load average would not do: it remembers the previous run of a
+// script for minutes.) Everything else sleeps, and so do the runs a `sweep` starts (they
+// inherit its choice). A choice the user made in the environment (OMP_WAIT_POLICY or
+// GOMP_SPINCOUNT) is kept. The wait policy changes the time a run takes, never its results.
 #include <string>
 #include <string_view>
 

@@ -3,10 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <regex>
-#include <sstream>
 
 #include "app/command_output.h"
 #include "core/version.h"
@@ -20,13 +18,6 @@ namespace {
 namespace fs = std::filesystem;
 using test::run_command;
 using test::softgrain;
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // The commit of the source tree now, as the build would name it ("" without git: then the
 // build said "unknown").
@@ -59,18 +50,12 @@ TEST(Version, PrintsTheVersionAndTheCommitOfTheSources) {
 
 TEST(Version, RunLogAndSummaryNameTheBuild) {
   const fs::path dir = scenes::process_temp_dir("version");
-  scenes::write_text_file(dir / "tiny.toml", std::string(R"(name = "tiny"
-[time]
-duration = 0.02
-[output]
-series_period = 0.005
-field_period = 0.01
-)") + scenes::kTinyScenarioBody);
+  scenes::write_text_file(dir / "tiny.toml", scenes::tiny_scenario("0.02"));
   const auto run = run_command(softgrain() + " --threads 1 run '" + (dir / "tiny.toml").string() +
                                "' -o '" + (dir / "out").string() + "'");
   ASSERT_EQ(run.status, 0) << run.text;
   const fs::path run_dir = dir / "out" / "tiny";
-  const std::string log = read(run_dir / "run.log");
+  const std::string log = scenes::read_text_file(run_dir / "run.log");
   EXPECT_NE(log.find("\nsoftgrain = \"" + std::string(softgrain_version()) + "\"\n"),
             std::string::npos)
       << log.substr(0, 300);
@@ -80,7 +65,8 @@ field_period = 0.01
   const auto analyze =
       run_command(softgrain() + " --threads 1 analyze '" + run_dir.string() + "' --no-plots");
   ASSERT_EQ(analyze.status, 0) << analyze.text;
-  const auto summary = nlohmann::json::parse(read(run_dir / "analysis" / "summary.json"));
+  const auto summary =
+      nlohmann::json::parse(scenes::read_text_file(run_dir / "analysis" / "summary.json"));
   EXPECT_EQ(summary.at("softgrain").at("version"), std::string(softgrain_version()));
   EXPECT_EQ(summary.at("softgrain").at("commit"), std::string(softgrain_commit()));
 }

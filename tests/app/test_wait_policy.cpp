@@ -4,8 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <string>
 
 #include "app/command_output.h"
 #include "core/wait_policy.h"
@@ -41,29 +40,16 @@ TEST(WaitPolicy, OneThreadAndOtherSubcommandsSleep) {
   EXPECT_FALSE(choose_wait_policy("", 2, 2, 0).spin);
 }
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // A tiny run of the real executable with the given environment prefix; returns its run.log.
 std::string run_log_with(const std::string& environment, const std::string& label) {
   const fs::path dir = scenes::process_temp_dir("wait_policy_" + label);
-  scenes::write_text_file(dir / "tiny.toml", std::string(R"(name = "tiny"
-[time]
-duration = 0.01
-[output]
-series_period = 0.005
-field_period = 0.01
-)") + scenes::kTinyScenarioBody);
+  scenes::write_text_file(dir / "tiny.toml", scenes::tiny_scenario("0.01"));
   const auto run = run_command("env -u OMP_WAIT_POLICY -u GOMP_SPINCOUNT -u " +
                                std::string(kWaitPolicyReasonVariable) + " " + environment + " " +
                                softgrain() + " --threads 1 run '" + (dir / "tiny.toml").string() +
                                "' -o '" + (dir / "out").string() + "'");
   EXPECT_EQ(run.status, 0) << run.text;
-  const std::string log = read(dir / "out" / "tiny" / "run.log");
+  const std::string log = scenes::read_text_file(dir / "out" / "tiny" / "run.log");
   fs::remove_all(dir);
   return log;
 }

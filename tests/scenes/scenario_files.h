@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <set>
 #include <string>
 
@@ -55,6 +56,12 @@ inline std::filesystem::path write_text_file(const std::filesystem::path& path,
                                              const std::string& text) {
   std::ofstream(path, std::ios::trunc) << text;
   return path;
+}
+
+// The whole content of a text file ("" if it cannot be read).
+inline std::string read_text_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 // `text` with the first occurrence of `from` replaced (a test failure if there is none).

@@ -2,6 +2,7 @@
 // The body of a tiny scenario shared by tests (everything after the [time] and [output]
 // tables, which each test writes itself): two materials, three contact laws, a floor, a soft
 // disc thrown down and a rigid disc.
+#include <string>
 
 namespace sg::scenes {
 
@@ -93,5 +94,12 @@ center = [-2.6, -0.1]
 radius = 0.3
 material = "soft"
 )";
+
+// The whole tiny scenario named "tiny": `duration`, a series row every 0.005 and fields every
+// 0.01, then kTinyScenarioBody.
+inline std::string tiny_scenario(const std::string& duration) {
+  return "name = \"tiny\"\n[time]\nduration = " + duration +
+         "\n[output]\nseries_period = 0.005\nfield_period = 0.01\n" + kTinyScenarioBody;
+}
 
 }  // namespace sg::scenes
