@@ -2,7 +2,8 @@
 // (solver/implicit_viscosity.h): a 60-grain cohesive shear cell (L = 20, E = 10, nu = 0.495,
 // node spacing 0.12, as the papers' grains but fewer; bench/scenes/imex-cell.toml), compacted for 3
 // time units once (IMEX, alpha = 0.02), then for each alpha in {0.02, 0.1, 0.3, 0.5}, damping model
-// and integrator: whole adaptive steps of shearing from that state. Reports the step, the wall
+// and integrator (the objective model's imex with its split solve, split: 1, the default, and
+// its exact one, 0): whole adaptive steps of shearing from that state. Reports the step, the wall
 // seconds per simulated time unit (time per step / dt: the step is constant over the timed steps),
 // the conjugate-gradient iterations per step (objective model), and the share of the wall time
 // spent in the velocity phase (the implicit solves).
@@ -32,7 +33,8 @@ namespace {
 constexpr DampingModel kModels[] = {DampingModel::objective, DampingModel::corotational,
                                     DampingModel::reference_stiffness};
 
-ScenarioDef imex_cell(double alpha, DampingModel model, bool imex) {
+// `objective_split`: the objective model's split solve (the default) or the exact one.
+ScenarioDef imex_cell(double alpha, DampingModel model, bool imex, bool objective_split = true) {
   scenes::CohesiveShearCell c;
   c.name = "imex_bench";
   c.grains = 60;
@@ -56,13 +58,14 @@ ScenarioDef imex_cell(double alpha, DampingModel model, bool imex) {
   std::filesystem::remove(file);
   for (MaterialDef& m : s.materials)
     if (m.name == "soft") m.damping_model = model;
+  s.imex_objective_split = objective_split;
   return s;
 }
 
-// The compacted state, computed once.
+// The compacted state (the exact objective solve, as before the split one), computed once.
 const StateSnapshot& compacted_state() {
   static const StateSnapshot state = [] {
-    const ScenarioDef s = imex_cell(0.02, DampingModel::objective, true);
+    const ScenarioDef s = imex_cell(0.02, DampingModel::objective, true, false);
     Model model = build_model(s);
     ContactSystem contacts(model, contact_law_table(s), contact_settings(s));
     Stepper solver(model, &contacts, resolve_integrator(s, model, 0.0).params);
@@ -81,8 +84,9 @@ void ImexShearCell(benchmark::State& state) {
   const DampingModel damping_model = kModels[state.range(1)];
   const bool imex = state.range(2) != 0;
   omp_set_num_threads(static_cast<int>(state.range(3)));
+  const bool split = state.range(4) != 0;
   const StateSnapshot& start = compacted_state();
-  const ScenarioDef s = imex_cell(alpha, damping_model, imex);
+  const ScenarioDef s = imex_cell(alpha, damping_model, imex, split);
   Model model = build_model(s);
   ContactSystem contacts(model, contact_law_table(s), contact_settings(s));
   Stepper solver(model, &contacts, resolve_integrator(s, model, 0.0).params);
@@ -112,24 +116,29 @@ void ImexShearCell(benchmark::State& state) {
       static_cast<double>(solves.factorizations - solves_before.factorizations);
   state.counters["velocity_share"] =
       (solver.profile()[StepPhase::velocities] - before[StepPhase::velocities]) / wall;
-  state.SetLabel(std::string(to_string(damping_model)) + (imex ? " imex" : " explicit"));
+  const bool exact = imex && !split && damping_model == DampingModel::objective;
+  state.SetLabel(std::string(to_string(damping_model)) + (imex ? " imex" : " explicit") +
+                 (exact ? " exact" : ""));
 }
 
+// The last argument: the objective model's split solve (1, the default) or the exact one (0).
 BENCHMARK(ImexShearCell)
-    ->ArgsProduct({{20, 100, 300, 500}, {0, 1, 2}, {0, 1}, {1, 2}})
-    ->ArgNames({"alpha_milli", "model", "imex", "threads"})
+    ->ArgsProduct({{20, 100, 300, 500}, {0, 1, 2}, {0, 1}, {1, 2}, {1}})
+    ->ArgsProduct({{20, 100, 300, 500}, {0}, {1}, {1, 2}, {0}})
+    ->ArgNames({"alpha_milli", "model", "imex", "threads", "split"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// The velocity solve's factor, sparse (Eigen's SimplicialLDLT, AMD ordering: what
-// ImplicitViscosity stores) against dense (Eigen::LDLT), on the 60 grains of the cell: the
-// grains' A0 = M + h/2 alpha K0 (alpha = 0.02, h = 3.2e-3), each factored (factorize: 1) or
-// solved for one right-hand side (0), grain after grain as the velocity phase does, so that the
-// factors come from memory and not from the cache. A grain's sparse factor fills 59% of the
-// lower triangle. Reports microseconds per grain.
+// The velocity solve's factor on the 60 grains of the cell: the grains' A0 = M + h/2 alpha K0
+// (alpha = 0.02, h = 3.2e-3), each factored (factorize: 1) or solved for one right-hand side
+// (0), grain after grain as the velocity phase does, so that the factors come from memory and
+// not from the cache. Factors (kind): 0 sparse SimplicialLDLT (AMD ordering; a grain's factor
+// fills 59% of the lower triangle), 1 dense LDLT (Eigen::LDLT, pivoted), 2 dense LLT
+// (Eigen::LLT: blocked factorization, no pivoting; A0 is symmetric positive definite).
+// Reports microseconds per grain.
 //   build/bench/bench_softgrain --benchmark_filter=ViscousFactor
 void ViscousFactor(benchmark::State& state) {
-  const bool dense = state.range(0) != 0;
+  const auto kind = state.range(0);
   const bool factorize = state.range(1) != 0;
   const ScenarioDef s = imex_cell(0.02, DampingModel::reference_stiffness, true);
   const Model model = build_model(s);
@@ -145,22 +154,36 @@ void ViscousFactor(benchmark::State& state) {
     systems.push_back(a);
   }
   std::vector<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>> sparse(systems.size());
-  std::vector<Eigen::LDLT<Eigen::MatrixXd>> dense_factors(systems.size());
+  std::vector<Eigen::LDLT<Eigen::MatrixXd>> ldlt(systems.size());
+  std::vector<Eigen::LLT<Eigen::MatrixXd>> llt(systems.size());
   std::vector<Eigen::MatrixXd> matrices(systems.size());
   std::vector<Eigen::VectorXd> rhs(systems.size()), x(systems.size());
   for (std::size_t k = 0; k < systems.size(); ++k) {
     sparse[k].compute(systems[k]);
     matrices[k] = Eigen::MatrixXd(systems[k]);
-    dense_factors[k].compute(matrices[k]);
+    ldlt[k].compute(matrices[k]);
+    llt[k].compute(matrices[k]);
     rhs[k] = Eigen::VectorXd::Ones(systems[k].rows());
   }
   const auto wall_start = std::chrono::steady_clock::now();
   for (auto _ : state) {
     for (std::size_t k = 0; k < systems.size(); ++k) {
-      if (factorize && dense) dense_factors[k].compute(matrices[k]);
-      if (factorize && !dense) sparse[k].factorize(systems[k]);
-      if (!factorize && dense) x[k] = dense_factors[k].solve(rhs[k]);
-      if (!factorize && !dense) x[k] = sparse[k].solve(rhs[k]);
+      if (kind == 0) {
+        if (factorize)
+          sparse[k].factorize(systems[k]);
+        else
+          x[k] = sparse[k].solve(rhs[k]);
+      } else if (kind == 1) {
+        if (factorize)
+          ldlt[k].compute(matrices[k]);
+        else
+          x[k] = ldlt[k].solve(rhs[k]);
+      } else {
+        if (factorize)
+          llt[k].compute(matrices[k]);
+        else
+          x[k] = llt[k].solve(rhs[k]);
+      }
     }
     benchmark::ClobberMemory();
   }
@@ -168,12 +191,13 @@ void ViscousFactor(benchmark::State& state) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   state.counters["us_per_grain"] =
       1e6 * wall / static_cast<double>(state.iterations()) / static_cast<double>(systems.size());
-  state.SetLabel(std::string(dense ? "dense" : "sparse") + (factorize ? " factorize" : " solve"));
+  const char* names[] = {"sparse LDLT", "dense LDLT", "dense LLT"};
+  state.SetLabel(std::string(names[kind]) + (factorize ? " factorize" : " solve"));
 }
 
 BENCHMARK(ViscousFactor)
-    ->ArgsProduct({{0, 1}, {0, 1}})
-    ->ArgNames({"dense", "factorize"})
+    ->ArgsProduct({{0, 1, 2}, {0, 1}})
+    ->ArgNames({"kind", "factorize"})
     ->Unit(benchmark::kMicrosecond)
     ->UseRealTime();
 
