@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # Whole runs of bench/scenes/imex-cell.toml (13 time units) for the IMEX accuracy and cost
 # tables of docs/scenario.md and docs/verification.md: for each case "alpha model integrator
-# [seed [imex_tolerance]]" given as arguments (or the default list), runs it on 2 threads, analyzes it and
-# prints one CSV line: alpha, model, integrator, seed, wall seconds, mu, p_wb, solid fraction
-# and the IMEX solve counts from run.log. mu, p_wb and the solid fraction are means over
+# [seed [imex_tolerance [imex_objective]]]" given as arguments (or the default list), runs it on
+# 2 threads, analyzes it and prints one CSV line: alpha, model, integrator, seed, tolerance,
+# objective solve, wall seconds, mu, p_wb, solid fraction and the IMEX solve counts from
+# run.log. An imex_tolerance of "default" leaves the key out, as an absent imex_objective does. mu, p_wb and the solid fraction are means over
 # t in [5, 13] (2 time units after the shear starts).
 #   bash bench/run_imex_accuracy.sh "0.3 objective imex" "0.3 objective explicit"
+#   bash bench/run_imex_accuracy.sh "0.3 objective imex 2 default exact"
 set -euo pipefail
 cd "${SOFTGRAIN_ROOT:-$(dirname "$0")/..}"
 bin=${SOFTGRAIN_BIN:-build-test/app/softgrain}
@@ -13,12 +15,13 @@ out=${SOFTGRAIN_BENCH_OUT:-out-bench}
 cases=("$@")
 [ ${#cases[@]} -eq 0 ] && cases=("0.02 objective explicit" "0.02 objective imex"
                                  "0.3 objective imex" "0.3 corotational imex")
-echo "alpha,model,integrator,seed,imex_tolerance,wall_s,mu,p_wb,solid_fraction,imex_note"
+echo "alpha,model,integrator,seed,imex_tolerance,imex_objective,wall_s,mu,p_wb,solid_fraction,imex_note"
 for c in "${cases[@]}"; do
-  read -r alpha model integrator seed tolerance <<<"$c"
+  read -r alpha model integrator seed tolerance objective <<<"$c"
   seed=${seed:-1}
-  name="imex-cell-a${alpha}-${model}-${integrator}-s${seed}${tolerance:+-tol$tolerance}"
-  tolerance_line=${tolerance:+imex_tolerance = $tolerance}
+  [ "$tolerance" = default ] && tolerance=""
+  name="imex-cell-a${alpha}-${model}-${integrator}-s${seed}${tolerance:+-tol$tolerance}${objective:+-$objective}"
+  tolerance_line=${tolerance:+imex_tolerance = $tolerance}${objective:+\\nimex_objective = \"$objective\"}
   scenario="$out/$name.toml"
   mkdir -p "$out"
   sed -e "0,/^name = .*/s//name = \"$name\"/" -e "s/^damping = .*/damping = $alpha/" \
@@ -45,5 +48,5 @@ print(find(s, "mu"), find(s, "bulk_share"), find(s, "solid_fraction"))
 PY
 )
   note=$(grep -h "^# imex:" "$out/$name/run.log" | sed 's/,/;/g' || true)
-  echo "$alpha,$model,$integrator,$seed,${tolerance:-default},$wall,$mu,$pwb,$phi,$note"
+  echo "$alpha,$model,$integrator,$seed,${tolerance:-default},${objective:-default},$wall,$mu,$pwb,$phi,$note"
 done

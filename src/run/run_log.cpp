@@ -27,6 +27,7 @@ void write_parameters(std::ostream& out, const ScenarioDef& s, const IntegratorC
       << "\nimex_tolerance = " << s.imex_tolerance
       << "\nimex_refactor_threshold = " << s.imex_refactor_threshold
       << "\nimex_dense_factors = " << (s.imex_dense_factors ? "true" : "false")
+      << "\nimex_objective = \"" << (s.imex_objective_split ? "split" : "exact") << "\""
       << "\n\n[output]\nseries_period = " << s.series_period
       << "\nfield_period = " << s.field_period << "\nfield_format = \""
       << (s.field_format == FieldFormat::ascii ? "ascii" : "binary")

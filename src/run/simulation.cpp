@@ -1,5 +1,7 @@
 #include "run/simulation.h"
 
+#include <algorithm>
+
 #include "scenario/geometry_checks.h"
 #include "solver/mass_scaling.h"
 
@@ -65,6 +67,13 @@ std::vector<double> run_settings(const ScenarioDef& s, const IntegratorChoice& i
   if (integrator.params.implicit_viscosity) {
     v.insert(v.end(), {1.0, s.imex_tolerance, s.imex_refactor_threshold});
     if (!s.imex_dense_factors) v.push_back(-1.0);  // (only when off: earlier checkpoints stay)
+    // (Only when it matters, an objective-damped material: a checkpoint of the exact solve,
+    // the only one before the split, does not resume under the split one.)
+    const bool objective_damped =
+        std::any_of(s.materials.begin(), s.materials.end(), [](const MaterialDef& m) {
+          return m.damping > 0.0 && m.damping_model == DampingModel::objective;
+        });
+    if (s.imex_objective_split && objective_damped) v.push_back(-2.0);
   }
   if (!s.contact_laws.empty()) {
     const ContactSettings c = contact_settings(s);

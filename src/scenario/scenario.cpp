@@ -180,7 +180,8 @@ IntegratorChoice resolve_integrator(const ScenarioDef& scenario, const Model& mo
                                     double contact_stiffness) {
   const IntegratorParams imex = IntegratorParams::imex(
       scenario.imex_tolerance, scenario.imex_refactor_threshold,
-      scenario.imex_dense_factors ? IntegratorParams::kDefaultDenseFactorLimit : 0);
+      scenario.imex_dense_factors ? IntegratorParams::kDefaultDenseFactorLimit : 0,
+      scenario.imex_objective_split);
   if (scenario.integrator == ScenarioIntegrator::automatic)
     return choose_default_integrator(model, scenario.time_step_safety, contact_stiffness, imex,
                                      scenario.fixed_time_step, scenario.step_tolerance);

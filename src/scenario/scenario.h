@@ -105,6 +105,10 @@ struct ScenarioDef {
   // Dense factors for the objective model's grains (solver/implicit_viscosity.h); false: sparse
   // factors for every body, the arithmetic of the versions before them.
   bool imex_dense_factors = true;
+  // imex_objective: "split" (true) solves the objective model's damping with its reference
+  // operator implicit and the rest explicit, at the price of the other models; "exact" (false)
+  // by conjugate gradients (solver/implicit_viscosity.h, docs/scenario.md "Integrators").
+  bool imex_objective_split = true;
   // [output]
   std::filesystem::path output_root = "out";
   double series_period = 0.0;  // time between rows of series.csv (0: 1/200 of duration)

@@ -11,7 +11,8 @@ void read_time(const TomlReader& root, ScenarioDef& s) {
   if (auto t = root.table("time")) {
     t->reject_unknown_keys({"duration", "safety", "fixed_step", "reestimate_interval",
                             "step_tolerance", "mass_scaling_step", "integrator", "imex_tolerance",
-                            "imex_refactor_threshold", "imex_dense_factors", "allow_long_run"});
+                            "imex_refactor_threshold", "imex_dense_factors", "imex_objective",
+                            "allow_long_run"});
     s.duration = t->positive("duration");
     s.time_step_safety = t->positive("safety", 0.8);
     if (s.time_step_safety > 1.0) t->fail("safety", "expected a number in (0, 1]");
@@ -30,6 +31,8 @@ void read_time(const TomlReader& root, ScenarioDef& s) {
     s.imex_refactor_threshold =
         t->non_negative("imex_refactor_threshold", s.imex_refactor_threshold);
     s.imex_dense_factors = t->boolean("imex_dense_factors", s.imex_dense_factors);
+    if (t->has("imex_objective"))
+      s.imex_objective_split = t->one_of("imex_objective", {"split", "exact"}, "split") == "split";
     s.allow_long_run = t->boolean("allow_long_run", false);
   } else {
     root.fail("time", "required table [time] with 'duration' is missing");

@@ -64,10 +64,11 @@ Eigen::SparseMatrix<double> assemble_damping_stiffness(const Model& model, BodyI
 namespace {
 
 // The 2x2 blocks of C(F) (header), emit(i, j, block) for every pair of row entries of every
-// Gauss point of `body`, in the order of assemble_gauss_blocks.
+// Gauss point of `body`, in the order of assemble_gauss_blocks; `lower_only`: only the pairs
+// with i >= j (half the work, for a factorization that reads the lower triangle).
 template <class Emit>
 void objective_damping_blocks(const Model& model, BodyId b, const std::vector<Mat2>& gradients,
-                              Emit&& emit) {
+                              Emit&& emit, bool lower_only = false) {
   const Body& body = model.body(b);
   const MaterialParams& m = model.material_of(b);
   const ShapeRows& rows = model.gauss_rows;
@@ -93,9 +94,10 @@ void objective_damping_blocks(const Model& model, BodyId b, const std::vector<Ma
     }
     for (auto a = begin; a < end; ++a)
       for (auto c = begin; c < end; ++c)
-        emit(rows.node[a], rows.node[c],
-             Mat2(strain[static_cast<std::size_t>(a - begin)].transpose() *
-                  stress[static_cast<std::size_t>(c - begin)]));
+        if (!lower_only || rows.node[a] >= rows.node[c])
+          emit(rows.node[a], rows.node[c],
+               Mat2(strain[static_cast<std::size_t>(a - begin)].transpose() *
+                    stress[static_cast<std::size_t>(c - begin)]));
   }
 }
 
@@ -156,10 +158,29 @@ void reassemble_objective_damping(const Model& model, BodyId b, const std::vecto
   });
 }
 
+void reassemble_objective_damping(const Model& model, BodyId b, const std::vector<Mat2>& gradients,
+                                  Eigen::MatrixXd& c, bool lower_only) {
+  // Each entry receives its terms in the order of the sparse assembly: the same values.
+  const int dofs = 2 * model.body(b).node_count();
+  c.setZero(dofs, dofs);
+  objective_damping_blocks(
+      model, b, gradients,
+      [&](int i, int j, const Mat2& k) {
+        c(2 * i, 2 * j) += k(0, 0);
+        c(2 * i + 1, 2 * j) += k(1, 0);
+        c(2 * i, 2 * j + 1) += k(0, 1);
+        c(2 * i + 1, 2 * j + 1) += k(1, 1);
+      },
+      lower_only);
+}
+
 ImplicitViscosity::ImplicitViscosity(const Model& model, double tolerance,
-                                     double refactor_threshold, int dense_factor_limit)
+                                     double refactor_threshold, int dense_factor_limit,
+                                     bool objective_split)
     : tolerance_(tolerance),
       refactor_threshold_(refactor_threshold),
+      objective_split_(objective_split),
+      split_margin_((1.0 + refactor_threshold) * (1.0 + refactor_threshold) - 1.0),
       system_of_body_(model.bodies.size(), -1),
       gradient_outputs_(model.bodies.size(), nullptr) {
   SG_VERIFY(tolerance > 0.0 && tolerance < 1.0,
@@ -190,6 +211,12 @@ ImplicitViscosity::ImplicitViscosity(const Model& model, double tolerance,
     pattern.diagonal() += s.mass;
     s.factor.analyzePattern(pattern);
     s.dense = prefers_dense_factor(s, pattern, dense_factor_limit);
+    if (s.dense) {
+      // A dense body's operator is assembled dense (reassemble_objective_damping), for the
+      // split solve only when it is factored: the sparse one is not kept.
+      if (!objective_split_) s.dense_damping = Eigen::MatrixXd(s.damping);
+      s.damping = SparseMatrix();
+    }
   }
 }
 
@@ -213,14 +240,30 @@ void ImplicitViscosity::refresh_preconditioners() {
     s->reference_gradients.clear();
 }
 
-void ImplicitViscosity::factorize(BodySystem& s, double h) {
-  SparseMatrix a = (0.5 * h) * s.damping;
-  a.diagonal() += s.mass;
+void ImplicitViscosity::factorize(const Model& model, BodySystem& s, double h) {
+  // The split solve's implicit operator is (1 + beta) C(F_ref) (header).
+  const bool split = objective_split_ && s.model == DampingModel::objective;
+  const double scale = 0.5 * h * (split ? 1.0 + split_margin_ : 1.0);
   bool factored = false;
-  if (s.dense) {
-    s.dense_factor.compute(Eigen::MatrixXd(a));
+  if (s.dense && split) {
+    // Assembled at the reference, factored in double precision in place (Cholesky: the
+    // operator is symmetric positive definite), kept in single precision (header).
+    thread_local Eigen::MatrixXd a;
+    reassemble_objective_damping(model, s.body, s.reference_gradients, a, true);
+    a *= scale;
+    a.diagonal() += s.mass;
+    Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> cholesky(a);
+    factored = cholesky.info() == Eigen::Success;
+    s.single_factor = a.cast<float>();
+  } else if (s.dense) {
+    Eigen::MatrixXd& a = s.dense_work;
+    a.noalias() = scale * s.dense_damping;
+    a.diagonal() += s.mass;
+    s.dense_factor.compute(a);
     factored = s.dense_factor.info() == Eigen::Success && s.dense_factor.isPositive();
   } else {
+    SparseMatrix a = scale * s.damping;
+    a.diagonal() += s.mass;
     s.factor.factorize(a);
     factored = s.factor.info() == Eigen::Success;
   }
@@ -241,6 +284,14 @@ void rotate_pairs(const Mat2& r, bool transpose, Eigen::VectorXd& v) {
   }
 }
 
+// The interleaved solution x = (dv_x0, dv_y0, dv_x1, ...) into dvx, dvy.
+void copy_increment(const Eigen::VectorXd& x, int n, double* dvx, double* dvy) {
+  for (int i = 0; i < n; ++i) {
+    dvx[i] = x[2 * i];
+    dvy[i] = x[2 * i + 1];
+  }
+}
+
 // max_g max_ij |(Q^T F_g - F_ref,g)_ij|: how far the body's stretch has moved from the
 // reference once its rotation since then is taken out.
 double stretch_change(const std::vector<Mat2>& gradients, const std::vector<Mat2>& reference,
@@ -258,6 +309,14 @@ void ImplicitViscosity::apply_preconditioner(BodySystem& s, const Mat2& rotation
                                              const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
   s.work_x = r;
   rotate_pairs(rotation, true, s.work_x);
+  if (s.single_factor.size() > 0) {
+    s.single = s.work_x.cast<float>();
+    s.single_factor.triangularView<Eigen::Lower>().solveInPlace(s.single);
+    s.single_factor.triangularView<Eigen::Lower>().adjoint().solveInPlace(s.single);
+    z = s.single.cast<double>();
+    rotate_pairs(rotation, false, z);
+    return;
+  }
   if (s.dense) {
     z.noalias() = s.dense_factor.solve(s.work_x);
     rotate_pairs(rotation, false, z);
@@ -308,12 +367,16 @@ bool ImplicitViscosity::update_reference(const Model& model, BodySystem& s, cons
       stretch_change(s.gradients, s.reference_gradients,
                      rotation * s.reference_rotation.transpose()) > refactor_threshold_;
   if (stale) {
-    reassemble_objective_damping(model, s.body, s.gradients, s.damping);
+    // (The split solve's dense bodies assemble when they factor.)
+    if (s.dense && !objective_split_)
+      reassemble_objective_damping(model, s.body, s.gradients, s.dense_damping);
+    else if (!s.dense)
+      reassemble_objective_damping(model, s.body, s.gradients, s.damping);
     s.reference_gradients = s.gradients;
     s.reference_rotation = rotation;
     ++s.statistics.reassemblies;
   }
-  if (stale || s.factor_h != h) factorize(s, h);
+  if (stale || s.factor_h != h) factorize(model, s, h);
   return stale;
 }
 
@@ -372,6 +435,12 @@ void ImplicitViscosity::solve(const Model& model, BodyId b, double h, const doub
     if (update_reference(model, s, rotation, h)) s.corrections = 0;
     // The preconditioner's factor is of Q A_ref Q^T with Q the rotation since the reference.
     const Mat2 turn = rotation * s.reference_rotation.transpose();
+    if (objective_split_) {
+      // The split solve (header): the stored factor's solve is the increment.
+      apply_preconditioner(s, turn, s.rhs, s.x);
+      copy_increment(s.x, n, dvx, dvy);
+      return;
+    }
     // The first guess: the preconditioned right-hand side plus the correction the iterations
     // added to it, extrapolated from the body's last two solves with the same reference (the
     // operator and the forces change little from one step to the next, and so does that
@@ -389,14 +458,11 @@ void ImplicitViscosity::solve(const Model& model, BodyId b, double h, const doub
     s.older_correction.swap(s.correction);
     s.correction = s.x - s.preconditioned;
   } else {
-    if (s.factor_h != h) factorize(s, h);
+    if (s.factor_h != h) factorize(model, s, h);
     // Exact for the reference-stiffness and corotational operators.
     apply_preconditioner(s, rotation, s.rhs, s.x);
   }
-  for (int i = 0; i < n; ++i) {
-    dvx[i] = s.x[2 * i];
-    dvy[i] = s.x[2 * i + 1];
-  }
+  copy_increment(s.x, n, dvx, dvy);
 }
 
 ViscousSolveStatistics ImplicitViscosity::statistics() const {

@@ -31,6 +31,27 @@
 //                        delta), when h changes, and at the first step after a checkpoint
 //                        (refresh_preconditioners), so that a resumed run repeats the same
 //                        factors as an uninterrupted one.
+//   objective, split     (imex_objective = "split", the scenarios' default) no iterations: the
+//                        implicit operator is the preconditioner's, C_imp = (1 + beta) Q C(F_ref)
+//                        Q^T, solved once with the stored factor, and the rest of C(F) stays
+//                        explicit. F_n already holds -C(F) v_n-1/2, so (M + h/2 C_imp) dv = h F_n
+//                        applies the viscous force -C(F) v_n-1/2 - C_imp dv / 2: the exact
+//                        objective force at the old velocity, plus an implicit increment. Its
+//                        stability, damping alone, for a mode of mass m, damping c and c_imp
+//                        under C_imp: the velocity's amplification is 1 - h c / (m + h c_imp / 2),
+//                        within [-1, 1] iff c <= c_imp + 2 m / h. The top modes of a grain are
+//                        heavily damped (h c >> m: at alpha = 0.3 on bench/scenes/imex-cell.toml,
+//                        2 m / h is under 1% of c), so C_imp must not fall below C(F). B(F) is
+//                        linear in F and |Q^T F - F_ref| <= delta between reassemblies, so C(F)
+//                        stays within about (1 + delta)^2 C(F_ref): beta = (1 + delta)^2 - 1
+//                        (0.21 at the default delta = 0.1). Measured on that cell: with beta = 0
+//                        the alpha = 0.3 run's bulk dissipation share p_wb rose by 3.7% (the
+//                        growing top modes, damped again at each reassembly), with beta it is
+//                        within 0.2% of the exact solve (docs/scenario.md "Integrators"). A rigid
+//                        rotation stays undamped to second order (its dv is radial, of size
+//                        h omega^2); the increment's error (C_imp - C) dv / 2 makes the step
+//                        first order in the damping, as the explicit integrator is, with a
+//                        constant about beta + 2 delta times the explicit one's.
 // Eigen factors A0 and A_ref; no hand-written factorization. A grain's factor is nearly dense:
 // each node couples with the ~12 of its MLS supports, and the fill of a sparse LDL^T (AMD
 // ordering) of a 73-node grain is 59% of the lower triangle. Objective-model bodies whose sparse
@@ -76,9 +97,11 @@ class ImplicitViscosity {
   // `tolerance`: relative residual |r| / |h F| at which conjugate gradients stop.
   // `refactor_threshold`: the objective model's delta (above). `dense_factor_limit`: the largest
   // body (in DOFs) whose factor may be dense (above; 0: none).
+  // `objective_split`: the objective model's split solve (above) instead of the exact one.
   ImplicitViscosity(const Model& model, double tolerance,
                     double refactor_threshold = kDefaultRefactorThreshold,
-                    int dense_factor_limit = IntegratorParams::kDefaultDenseFactorLimit);
+                    int dense_factor_limit = IntegratorParams::kDefaultDenseFactorLimit,
+                    bool objective_split = false);
   static constexpr double kDefaultRefactorThreshold = 0.1;
 
   // The objective model's next solve of every body assembles and factors its operator anew.
@@ -106,11 +129,17 @@ class ImplicitViscosity {
     BodyId body = -1;
     DampingModel model = DampingModel::objective;
     // alpha K0, or C(F_ref) for the objective model: DOF 2 i (x) and 2 i + 1 (y) of node i
+    // (sparse bodies; empty for dense ones)
     SparseMatrix damping;
     Eigen::VectorXd mass;                        // lumped mass per DOF
     Eigen::SimplicialLDLT<SparseMatrix> factor;  // of M + h/2 damping (sparse bodies)
-    bool dense = false;                          // the factor is dense_factor instead
+    bool dense = false;  // the factor is dense_factor instead, the operator dense_damping
     Eigen::LDLT<Eigen::MatrixXd> dense_factor;
+    Eigen::MatrixXd dense_damping, dense_work;  // C(F_ref); M + h/2 C(F_ref) (scratch)
+    // The split solve's dense bodies: the Cholesky factor L of M + h/2 (1 + beta) C(F_ref) in
+    // its lower triangle, single precision; `single`: a vector of that precision (scratch).
+    Eigen::MatrixXf single_factor;
+    Eigen::VectorXf single;
     double factor_h = 0.0;
     std::vector<Mat2> gradients;            // objective model: F per Gauss point
     std::vector<Mat2> reference_gradients;  // F_ref, empty until the first assembly
@@ -123,11 +152,13 @@ class ImplicitViscosity {
     ViscousSolveStatistics statistics;
   };
   double tolerance_, refactor_threshold_;
-  std::vector<int> system_of_body_;                   // index into systems_, or -1 (explicit)
+  bool objective_split_;
+  double split_margin_;              // beta of the split solve: (1 + refactor_threshold)^2 - 1
+  std::vector<int> system_of_body_;  // index into systems_, or -1 (explicit)
   std::vector<std::unique_ptr<BodySystem>> systems_;  // (Eigen's factors cannot be moved)
   std::vector<Mat2*> gradient_outputs_;
 
-  void factorize(BodySystem& system, double h);
+  void factorize(const Model& model, BodySystem& system, double h);
   // Whether `system`'s body (its operator's pattern `a`) gets a dense factor.
   static bool prefers_dense_factor(BodySystem& system, const SparseMatrix& a, int limit);
   // Objective model: C(F_ref) assembled anew (and factored) when refresh_preconditioners()
@@ -162,5 +193,11 @@ void reassemble_objective_damping(const Model& model, BodyId body,
                                   const std::vector<Mat2>& gradients,
                                   Eigen::SparseMatrix<double>& c,
                                   std::size_t largest_tabulated = 1024);
+// The same into a dense matrix (the bodies whose factor is dense), the same values;
+// `lower_only`: only the node blocks on and below the diagonal, the rest zero (what a Cholesky
+// factorization reads).
+void reassemble_objective_damping(const Model& model, BodyId body,
+                                  const std::vector<Mat2>& gradients, Eigen::MatrixXd& c,
+                                  bool lower_only = false);
 
 }  // namespace sg

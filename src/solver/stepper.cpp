@@ -10,9 +10,9 @@ namespace sg {
 Stepper::Stepper(Model& model, ContactSystem* contacts, const IntegratorParams& integrator)
     : model_(model), contacts_(contacts), integrator_(integrator) {
   if (integrator.implicit_viscosity)
-    implicit_ = std::make_unique<ImplicitViscosity>(model, integrator.imex_tolerance,
-                                                    integrator.imex_refactor_threshold,
-                                                    integrator.imex_dense_factor_limit);
+    implicit_ = std::make_unique<ImplicitViscosity>(
+        model, integrator.imex_tolerance, integrator.imex_refactor_threshold,
+        integrator.imex_dense_factor_limit, integrator.imex_objective_split);
 }
 
 Stepper::~Stepper() = default;
