@@ -224,8 +224,10 @@ bool ImplicitViscosity::prefers_dense_factor(BodySystem& s, const SparseMatrix& 
   const Eigen::Index n = a.rows();
   if (n > limit) return false;
   // Only the objective model gains: its conjugate gradients apply the factor 2 to 4 times per
-  // step while it is in cache. The other models solve once per step and read the factor from
-  // memory, where the dense one (168 kB for a 73-node grain) costs more than the sparse (77 kB).
+  // step while it is in cache, and its split solve keeps the factor in single precision (the
+  // lower triangle read per solve, 42 kB for a 73-node grain). The other models solve once per
+  // step and read the factor from memory, where the dense double one (168 kB stored, 85 kB
+  // read) costs more than the sparse (77 kB).
   if (s.model != DampingModel::objective) return false;
   // The fill of the sparse factor, from one factorization of a matrix of the pattern (M + K0
   // is one: symmetric positive definite; Eigen gives L only once factored).
