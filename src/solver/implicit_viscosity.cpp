@@ -247,10 +247,10 @@ void ImplicitViscosity::factorize(const Model& model, BodySystem& s, double h) {
   const bool split = objective_split_ && s.model == DampingModel::objective;
   const double scale = 0.5 * h * (split ? 1.0 + split_margin_ : 1.0);
   bool factored = false;
+  thread_local Eigen::MatrixXd a;  // a dense body's M + h/2 C (scratch)
   if (s.dense && split) {
     // Assembled at the reference, factored in double precision in place (Cholesky: the
     // operator is symmetric positive definite), kept in single precision (header).
-    thread_local Eigen::MatrixXd a;
     reassemble_objective_damping(model, s.body, s.reference_gradients, a, true);
     a *= scale;
     a.diagonal() += s.mass;
@@ -258,15 +258,14 @@ void ImplicitViscosity::factorize(const Model& model, BodySystem& s, double h) {
     factored = cholesky.info() == Eigen::Success;
     s.single_factor = a.cast<float>();
   } else if (s.dense) {
-    Eigen::MatrixXd& a = s.dense_work;
     a.noalias() = scale * s.dense_damping;
     a.diagonal() += s.mass;
     s.dense_factor.compute(a);
     factored = s.dense_factor.info() == Eigen::Success && s.dense_factor.isPositive();
   } else {
-    SparseMatrix a = scale * s.damping;
-    a.diagonal() += s.mass;
-    s.factor.factorize(a);
+    SparseMatrix sparse = scale * s.damping;
+    sparse.diagonal() += s.mass;
+    s.factor.factorize(sparse);
     factored = s.factor.info() == Eigen::Success;
   }
   SG_VERIFY(factored, "imex: the factorization of M + h/2 C failed for body " << s.body);

@@ -135,7 +135,7 @@ class ImplicitViscosity {
     Eigen::SimplicialLDLT<SparseMatrix> factor;  // of M + h/2 damping (sparse bodies)
     bool dense = false;  // the factor is dense_factor instead, the operator dense_damping
     Eigen::LDLT<Eigen::MatrixXd> dense_factor;
-    Eigen::MatrixXd dense_damping, dense_work;  // C(F_ref); M + h/2 C(F_ref) (scratch)
+    Eigen::MatrixXd dense_damping;  // C(F_ref) (exact solve)
     // The split solve's dense bodies: the Cholesky factor L of M + h/2 (1 + beta) C(F_ref) in
     // its lower triangle, single precision; `single`: a vector of that precision (scratch).
     Eigen::MatrixXf single_factor;

@@ -61,10 +61,7 @@ void expect_ledger_closes(const std::string& tag, bool imex, double damping, dou
   ASSERT_TRUE(summary.completed);
   const scenes::SeriesText s = scenes::read_series_text(summary.directory / "series.csv");
   ASSERT_GT(s.rows.size(), 100u);
-  const std::vector<double>& last = s.rows.back();
-  const double work = last[s.column("external_work")];
-  const double residual = last[s.column("energy_residual")];
-  const double bulk = last[s.column("damping_dissipation")];
+  const auto [work, residual, bulk] = scenes::final_ledger(s);
   std::printf(
       "F-bar cell, %s, alpha %.2f: external work %.5g, bulk dissipation %.5g, residual "
       "%.3g (%.4f%%)\n",

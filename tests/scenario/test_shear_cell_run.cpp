@@ -154,10 +154,7 @@ TEST(ShearCellRun, ImexLedgerClosesWithinOnePercentOfTheExternalWork) {
   const Series& s = split.series;
   ASSERT_GT(s.rows.size(), 500u);
   const auto ledger = [](const Series& series, const char* what) {
-    const std::vector<double>& last = series.rows.back();
-    const double work = last[series.column("external_work")];
-    const double residual = last[series.column("energy_residual")];
-    const double bulk = last[series.column("damping_dissipation")];
+    const auto [work, residual, bulk] = scenes::final_ledger(series);
     std::printf(
         "imex (%s), alpha 0.3: external work %.5g, bulk dissipation %.5g (%.1f%%), residual %.3g "
         "(%.3f%%)\n",
@@ -183,7 +180,7 @@ TEST(ShearCellRun, ImexLedgerClosesWithinOnePercentOfTheExternalWork) {
       run_imex_cell("sparse", "imex_objective = \"exact\"\nimex_dense_factors = false\n");
   const Series& p = sparse.series;
   ASSERT_EQ(p.rows.size(), d.rows.size());
-  const double sparse_residual = p.rows.back()[p.column("energy_residual")];
+  const double sparse_residual = scenes::final_ledger(p).residual;
   const double sparse_mu = friction_over(p, 6.0, 12.0).mu;
   std::printf(
       "dense / sparse factors: mu %.8f / %.8f (%.1e relative), residual %.4f%% / %.4f%% of the "

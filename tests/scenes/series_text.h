@@ -43,4 +43,15 @@ inline SeriesText read_series_text(const std::filesystem::path& file) {
   return s;
 }
 
+// The energy ledger at a run's last row: external work, ledger residual, bulk dissipation.
+struct FinalLedger {
+  double work = 0.0, residual = 0.0, bulk = 0.0;
+};
+
+inline FinalLedger final_ledger(const SeriesText& s) {
+  const std::vector<double>& last = s.rows.back();
+  return {last[s.column("external_work")], last[s.column("energy_residual")],
+          last[s.column("damping_dissipation")]};
+}
+
 }  // namespace sg::scenes
