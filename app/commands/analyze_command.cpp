@@ -3,6 +3,7 @@
 // RUN_DIR/analysis/summary.json, profiles.csv, compaction.csv, a table.
 #include <iostream>
 
+#include "analyze_options.h"
 #include "command_registry.h"
 #include "core/exit_status.h"
 #include "io/run_directory.h"
@@ -12,21 +13,6 @@
 
 namespace sg::app {
 namespace {
-
-struct AnalyzeArguments {
-  std::string run_dir;
-  std::vector<double> window, layer;
-  double length = RunParameters::kUnknown, gap = RunParameters::kUnknown,
-         velocity = RunParameters::kUnknown, young = RunParameters::kUnknown,
-         cohesion = RunParameters::kUnknown, alpha = RunParameters::kUnknown,
-         diameter = RunParameters::kUnknown;
-  int bins = 0;
-  bool no_agglomerates = false;
-  double threshold = 0.8;
-  std::vector<double> att_thresholds;
-  double stress_imbalance = SteadinessThresholds{}.stress_imbalance;
-  bool plots = false, no_plots = false;
-};
 
 // The composite figure's snapshots (render/composite_snapshots.h) as plot_run.py's
 // arguments: --snapshot FIELD=PNG for each picture, --snapshot-note TEXT for each failure.
@@ -78,44 +64,7 @@ const Registration registration(
            "Friction, energy budget, profiles, agglomerates of a run folder, the compaction "
            "curve of a compaction box; writes RUN_DIR/analysis/summary.json, profiles.csv, "
            "compaction.csv");
-       cmd->add_option("run_dir", a->run_dir, "run folder (holds series.csv)")->required();
-       cmd->add_option("--window", a->window,
-                       "averaging window T0 T1 (default: MSER-5 steady state, or the whole run)")
-           ->expected(2);
-       cmd->add_option("--length", a->length, "L, period of the cell (default: scenario)");
-       cmd->add_option("--gap", a->gap, "D, gap between the first bodies (default: scenario)");
-       cmd->add_option("--velocity", a->velocity, "V, sliding velocity (default: scenario)");
-       cmd->add_option("--young", a->young, "E of the grains (default: scenario)");
-       cmd->add_option("--cohesion", a->cohesion, "c, cohesion (default: scenario)");
-       cmd->add_option("--alpha", a->alpha, "alpha, Rayleigh damping (default: scenario)");
-       cmd->add_option("--diameter", a->diameter,
-                       "mean grain diameter (default: from grains/*.csv)");
-       cmd->add_option("--layer", a->layer,
-                       "layer bounds Y0 Y1 for profiles and solid fraction (default: grains)")
-           ->expected(2);
-       cmd->add_option("--bins", a->bins, "profile bins (default: two per mean diameter)");
-       cmd->add_flag("--no-agglomerates", a->no_agglomerates, "skip the coherence analysis");
-       cmd->add_option("--coherence-threshold", a->threshold,
-                       "|C| above which a grid node belongs to a structure (paper 002: 0.8)")
-           ->check(CLI::Range(0.0, 1.0).description("in (0, 1)"))
-           ->capture_default_str();
-       cmd->add_option("--att-thresholds", a->att_thresholds,
-                       "shares of the velocity jump LO HI bounding the activated third-body "
-                       "thickness (paper 003: 0.2 0.8)")
-           ->expected(2);
-       cmd->add_option("--stress-imbalance", a->stress_imbalance,
-                       "warn when the top and bottom mean normal stresses differ by more than "
-                       "this fraction of their mean (docs/analysis.md, steadiness checks)")
-           ->check(CLI::PositiveNumber)
-           ->capture_default_str();
-       CLI::Option* plots = cmd->add_flag(
-           "--plots", a->plots,
-           "draw mu(t), profiles, energy shares, agglomerate PDFs, the compaction curve and, "
-           "for a shear cell, the composite figure (the last frame's velocity, strain rate "
-           "and stress, drawn into RUN_DIR/render/, beside mu(t), the profiles and the run's "
-           "place in (E~, c~, alpha~)) into RUN_DIR/analysis/*.png "
-           "(default: on when /usr/bin/python3 imports matplotlib)");
-       cmd->add_flag("--no-plots", a->no_plots, "no plots")->excludes(plots);
+       add_analyze_options(*cmd, *a);
        return std::function<int()>([a, &options] {
          apply_threads(options);
          AnalyzeOptions o;

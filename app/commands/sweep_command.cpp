@@ -5,10 +5,12 @@
 #include <iostream>
 #include <optional>
 
+#include "analyze_options.h"
 #include "campaign/campaign_def.h"
 #include "campaign/slurm_campaign.h"
 #include "campaign/sweep.h"
 #include "command_registry.h"
+#include "core/error.h"
 #include "core/exit_status.h"
 
 namespace sg::app {
@@ -91,6 +93,13 @@ const Registration registration(
            "unfinished runs again; each resumes from its checkpoint).");
        return std::function<int()>([a, &options] {
          CampaignDef campaign = load_campaign(a->campaign);
+         // Before any run: a misspelt analysis option would fail each analysis after its
+         // simulation.
+         if (const std::string error = analyze_options_error(campaign.analyze_options);
+             !error.empty())
+           SG_THROW(campaign.file.string()
+                    << ":" << campaign.analyze_options_line
+                    << ": key 'analyze_options': `softgrain analyze` refuses them: " << error);
          SlurmOverrides overrides;
          overrides.partition = a->partition;
          overrides.account = a->account;

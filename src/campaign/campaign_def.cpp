@@ -281,6 +281,7 @@ void read_settings(const fs::path& file, const toml::table& doc, CampaignDef& c)
   if (const toml::node* n = doc.get("analyze_options")) {
     const auto* a = n->as_array();
     if (!a) fail(file, line_of(*n), "analyze_options", "", "expected an array of strings");
+    c.analyze_options_line = line_of(*n);
     for (const auto& e : *a) {
       if (!e.is_string())
         fail(file, line_of(e), "analyze_options", "",

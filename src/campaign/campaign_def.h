@@ -57,6 +57,7 @@ struct CampaignDef {
   int parallel = 1;                          // runs at a time
   int threads = 0;                           // OpenMP threads per run; 0: cores / parallel
   std::vector<std::string> analyze_options;  // extra options of `softgrain analyze`
+  std::size_t analyze_options_line = 0;      // where the campaign file gives them
   SlurmSettings slurm;                       // [slurm]: how `sweep --slurm` submits it
   std::vector<CampaignParameter> parameters;
   std::vector<CampaignRun> runs;

@@ -1,6 +1,11 @@
 // A typo on the command line is answered with the name meant: an unknown subcommand names
-// the nearest one, a misspelled render --field lists the valid fields (coherence included).
+// the nearest one, a misspelled render --field lists the valid fields (coherence included), a
+// campaign's misspelt analyze option stops the sweep before its first run.
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 
 #include "app/command_output.h"
 #include "core/nearest_name.h"
@@ -56,6 +61,31 @@ TEST(CommandLine, AMisspelledRenderFieldListsTheChoices) {
       << out.text;
   for (const char* field : {"von_mises", "strain_rate", "coherence", "body", "sigma_xy"})
     EXPECT_NE(out.text.find(field), std::string::npos) << field << " missing in " << out.text;
+}
+
+TEST(CommandLine, AMisspeltAnalyzeOptionStopsTheCampaignBeforeItsRuns) {
+  // Each run would otherwise simulate, then fail its analysis.
+  namespace fs = std::filesystem;
+  const fs::path dir =
+      fs::temp_directory_path() / ("softgrain-analyze-options-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "c.toml") << "name = \"typo\"\n"
+                                << "scenario = \"" << SOFTGRAIN_SOURCE_DIR
+                                << "/examples/free-grains.toml\"\n"
+                                << "output = \"out\"\n"
+                                << "analyze_options = [\"--no-agglomeratez\"]\n"
+                                << "[grid]\n\"materials.0.young\" = [10.0, 20.0]\n";
+  const auto out = run_command(softgrain() + " sweep '" + (dir / "c.toml").string() + "'");
+  EXPECT_NE(out.status, 0);
+  EXPECT_NE(out.text.find("c.toml:4: key 'analyze_options'"), std::string::npos) << out.text;
+  EXPECT_NE(out.text.find("--no-agglomeratez"), std::string::npos) << out.text;
+  EXPECT_FALSE(fs::exists(dir / "out")) << "the sweep wrote its campaign folder";
+  // The same campaign with the option spelt right starts (a dry run: nothing simulated).
+  const auto good =
+      run_command("sed -i 's/agglomeratez/agglomerates/' '" + (dir / "c.toml").string() + "' && " +
+                  softgrain() + " sweep --dry-run --no-plan '" + (dir / "c.toml").string() + "'");
+  EXPECT_EQ(good.status, 0) << good.text;
+  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -73,6 +73,23 @@ std::vector<fs::path> files_under(const fs::path& root) {
   return files;
 }
 
+// The line without the contents of its JSON strings: a path such as the run folder's may
+// hold "NaN" (a temporary folder's random name did, in CI), which is text, not a number.
+std::string outside_json_strings(const std::string& line) {
+  std::string kept;
+  bool in_string = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (in_string && c == '\\') {
+      ++i;  // an escaped character, '\"' included
+      continue;
+    }
+    if (c == '"') in_string = !in_string;
+    if (!in_string && c != '"') kept += c;
+  }
+  return kept;
+}
+
 // Empty if no CSV table (series.csv(.partial), grains/, analysis/, a campaign.csv) or JSON
 // summary under the output root holds a non-finite number (a run that "ran" while writing
 // NaN energies, as a density of 1e300 did, is a failure: issue #26).
@@ -90,7 +107,7 @@ std::string non_finite_output(const Sandbox& s) {
                                 " line " + std::to_string(line_number);
       if (json) {
         for (const char* bad : {"NaN", "Infinity"})
-          if (line.find(bad) != std::string::npos)
+          if (outside_json_strings(line).find(bad) != std::string::npos)
             return "wrote '" + std::string(bad) + "'" + where;
         continue;
       }
