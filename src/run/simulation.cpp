@@ -74,6 +74,12 @@ std::vector<double> run_settings(const ScenarioDef& s, const IntegratorChoice& i
           return m.damping > 0.0 && m.damping_model == DampingModel::objective;
         });
     if (s.imex_objective_split && objective_damped) v.push_back(-2.0);
+    // (Likewise: the reference-stiffness and corotational grains' single-precision factors.)
+    const bool stored_factor_damped =
+        std::any_of(s.materials.begin(), s.materials.end(), [](const MaterialDef& m) {
+          return m.damping > 0.0 && m.damping_model != DampingModel::objective;
+        });
+    if (s.imex_dense_factors && stored_factor_damped) v.push_back(-3.0);
   }
   if (!s.contact_laws.empty()) {
     const ContactSettings c = contact_settings(s);

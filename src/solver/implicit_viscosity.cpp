@@ -211,9 +211,11 @@ ImplicitViscosity::ImplicitViscosity(const Model& model, double tolerance,
     pattern.diagonal() += s.mass;
     s.factor.analyzePattern(pattern);
     s.dense = prefers_dense_factor(s, pattern, dense_factor_limit);
-    if (s.dense) {
-      // A dense body's operator is assembled dense (reassemble_objective_damping), for the
-      // split solve only when it is factored: the sparse one is not kept.
+    if (s.dense && s.model == DampingModel::objective) {
+      // A dense body's objective operator is assembled dense (reassemble_objective_damping),
+      // for the split solve only when it is factored: the sparse one is not kept. (The other
+      // models keep their sparse alpha K0, the smaller, for the refactorizations when h
+      // changes.)
       if (!objective_split_) s.dense_damping = Eigen::MatrixXd(s.damping);
       s.damping = SparseMatrix();
     }
@@ -223,12 +225,6 @@ ImplicitViscosity::ImplicitViscosity(const Model& model, double tolerance,
 bool ImplicitViscosity::prefers_dense_factor(BodySystem& s, const SparseMatrix& a, int limit) {
   const Eigen::Index n = a.rows();
   if (n > limit) return false;
-  // Only the objective model gains: its conjugate gradients apply the factor 2 to 4 times per
-  // step while it is in cache, and its split solve keeps the factor in single precision (the
-  // lower triangle read per solve, 42 kB for a 73-node grain). The other models solve once per
-  // step and read the factor from memory, where the dense double one (168 kB stored, 85 kB
-  // read) costs more than the sparse (77 kB).
-  if (s.model != DampingModel::objective) return false;
   // The fill of the sparse factor, from one factorization of a matrix of the pattern (M + K0
   // is one: symmetric positive definite; Eigen gives L only once factored).
   s.factor.factorize(a);
@@ -242,16 +238,24 @@ void ImplicitViscosity::refresh_preconditioners() {
     s->reference_gradients.clear();
 }
 
+bool ImplicitViscosity::single_precision_factor(const BodySystem& s) const {
+  return s.dense && (s.model != DampingModel::objective || objective_split_);
+}
+
 void ImplicitViscosity::factorize(const Model& model, BodySystem& s, double h) {
   // The split solve's implicit operator is (1 + beta) C(F_ref) (header).
   const bool split = objective_split_ && s.model == DampingModel::objective;
   const double scale = 0.5 * h * (split ? 1.0 + split_margin_ : 1.0);
   bool factored = false;
   thread_local Eigen::MatrixXd a;  // a dense body's M + h/2 C (scratch)
-  if (s.dense && split) {
-    // Assembled at the reference, factored in double precision in place (Cholesky: the
+  if (single_precision_factor(s)) {
+    // C dense, on and below the diagonal: the objective one assembled at the reference, alpha
+    // K0 from its sparse matrix. Factored in double precision in place (Cholesky: the
     // operator is symmetric positive definite), kept in single precision (header).
-    reassemble_objective_damping(model, s.body, s.reference_gradients, a, true);
+    if (split)
+      reassemble_objective_damping(model, s.body, s.reference_gradients, a, true);
+    else
+      a = s.damping;
     a *= scale;
     a.diagonal() += s.mass;
     Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> cholesky(a);

@@ -54,14 +54,21 @@
 //                        constant about beta + 2 delta times the explicit one's.
 // Eigen factors A0 and A_ref; no hand-written factorization. A grain's factor is nearly dense:
 // each node couples with the ~12 of its MLS supports, and the fill of a sparse LDL^T (AMD
-// ordering) of a 73-node grain is 59% of the lower triangle. Objective-model bodies whose sparse
-// factor would be over half full (at most `dense_factor_limit` DOFs) keep a dense LDL^T
-// (Eigen::LDLT, vectorized triangular solves) instead: on the 60 grains of
-// bench/scenes/imex-cell.toml, 6.6 against 10.4 us per solve and 164 against 194 us per
-// factorization (bench/results/debian12-2core/dense_factor.csv), and the objective step 8-24%
-// cheaper. The models that solve once per step keep SimplicialLDLT: their factor comes from
-// memory, and the dense one made their step 13-29% dearer. Either solves to round-off; results
-// differ from the other's in the last bits (dense_factor_limit = 0: sparse everywhere).
+// ordering) of a 73-node grain is 59% of the lower triangle. Bodies whose sparse factor would be
+// over half full (at most `dense_factor_limit` DOFs) keep a dense one instead:
+//   - the solves done once per step (reference_stiffness, corotational, the split solve): a
+//     Cholesky factor computed in double precision and kept in single precision, whose
+//     triangular solves read half the bytes of the sparse double-precision factor (42 kB of the
+//     lower triangle of a 73-node grain, against 77 kB); the factor comes from memory at each
+//     step. The increment moves by about 1e-7 relative. On bench/scenes/imex-cell.toml (60
+//     grains, 2 threads) whole reference_stiffness and corotational runs 1.16 and 1.20 times
+//     faster, mu within 2.7e-4 relative of the sparse factors
+//     (bench/results/debian12-2core/dense_factor_single_speed.csv, _accuracy.csv);
+//   - the exact objective solve's preconditioner: Eigen::LDLT in double precision, which its
+//     conjugate gradients apply 2 to 4 times per step while it is in cache: 6.6 against 10.4 us
+//     per solve and 164 against 194 us per factorization (dense_factor.csv), the objective
+//     step 8-24% cheaper; results differ from sparse factors in the last bits.
+// dense_factor_limit = 0: sparse double-precision factors everywhere.
 //
 // The force the update applied is F* = M dv / h (exactly what moved the velocities, whatever
 // the solve's residual), and the viscous force booked by the ledger is f_v* = f_v(v_n-1/2) +
@@ -129,15 +136,16 @@ class ImplicitViscosity {
     BodyId body = -1;
     DampingModel model = DampingModel::objective;
     // alpha K0, or C(F_ref) for the objective model: DOF 2 i (x) and 2 i + 1 (y) of node i
-    // (sparse bodies; empty for dense ones)
+    // (empty for the objective model's dense bodies)
     SparseMatrix damping;
     Eigen::VectorXd mass;                        // lumped mass per DOF
     Eigen::SimplicialLDLT<SparseMatrix> factor;  // of M + h/2 damping (sparse bodies)
-    bool dense = false;  // the factor is dense_factor instead, the operator dense_damping
+    bool dense = false;  // the factor is dense: single_factor, or dense_factor (exact solve)
     Eigen::LDLT<Eigen::MatrixXd> dense_factor;
     Eigen::MatrixXd dense_damping;  // C(F_ref) (exact solve)
-    // The split solve's dense bodies: the Cholesky factor L of M + h/2 (1 + beta) C(F_ref) in
-    // its lower triangle, single precision; `single`: a vector of that precision (scratch).
+    // The dense bodies of the solves done once per step: the Cholesky factor L of M + h/2
+    // alpha K0 or of M + h/2 (1 + beta) C(F_ref) (split) in its lower triangle, single
+    // precision; `single`: a vector of that precision (scratch).
     Eigen::MatrixXf single_factor;
     Eigen::VectorXf single;
     double factor_h = 0.0;
@@ -159,6 +167,10 @@ class ImplicitViscosity {
   std::vector<Mat2*> gradient_outputs_;
 
   void factorize(const Model& model, BodySystem& system, double h);
+  // Whether `system` keeps a single-precision Cholesky factor (its solve is the increment:
+  // the reference-stiffness and corotational models, the split solve) rather than a double
+  // one (the exact solve's preconditioner, the sparse bodies).
+  bool single_precision_factor(const BodySystem& system) const;
   // Whether `system`'s body (its operator's pattern `a`) gets a dense factor.
   static bool prefers_dense_factor(BodySystem& system, const SparseMatrix& a, int limit);
   // Objective model: C(F_ref) assembled anew (and factored) when refresh_preconditioners()

@@ -14,6 +14,7 @@ struct CohesiveShearCell {
   double checkpoint_period = -1.0;  // < 0: key omitted (the default)
   double node_spacing = 0.25;
   double poisson = 0.45, damping = 0.01;
+  std::string damping_model;  // of the grains; empty: key omitted (objective)
   double normal_stiffness = 2000.0, cohesion = 0.1;
   double length = 6.0;
   int grains = 8;
@@ -37,7 +38,9 @@ inline std::string shear_cell_scenario(const CohesiveShearCell& c) {
   if (c.checkpoint_period >= 0.0) s << "checkpoint_period = " << c.checkpoint_period << "\n";
   s << "[discretization]\nnode_spacing = " << c.node_spacing
     << "\n[[materials]]\nname = \"soft\"\nyoung = 10.0\npoisson = " << c.poisson
-    << "\ndamping = " << c.damping << "\n[[materials]]\nname = \"first_body\"\nyoung = 1000.0\n";
+    << "\ndamping = " << c.damping << "\n";
+  if (!c.damping_model.empty()) s << "damping_model = \"" << c.damping_model << "\"\n";
+  s << "[[materials]]\nname = \"first_body\"\nyoung = 1000.0\n";
   law("soft", "soft", "cohesive");
   law("soft", "first_body", "cohesive");
   law("first_body", "first_body", "frictionless");

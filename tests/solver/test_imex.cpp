@@ -294,8 +294,10 @@ TEST(Imex, ARigidSpinStepIsUndampedByTheObjectiveForms) {
     }
 }
 
-// The IMEX velocity increment of body 0 for a given state (h = 1e-2).
-Eigen::VectorXd imex_increment(DampingModel damping_model, const Mat2& f) {
+// The IMEX velocity increment of body 0 for a given state, the same random forces each time.
+// `dense_factor_limit` 0: sparse double-precision factors (the exact arithmetic).
+Eigen::VectorXd imex_increment(DampingModel damping_model, const Mat2& f,
+                               int dense_factor_limit = 0, double h = 1e-2) {
   Model model = damped_disc(0.3, damping_model);
   set_affine_deformation(model, 0, f);
   Lcg random;
@@ -305,9 +307,10 @@ Eigen::VectorXd imex_increment(DampingModel damping_model, const Mat2& f) {
     fx[i] = random.next();
     fy[i] = random.next();
   }
-  ImplicitViscosity viscosity(model, 1e-13);
-  viscosity.solve(model, 0, 1e-2, model.nodes.ux.data(), model.nodes.uy.data(), fx.data(),
-                  fy.data(), dvx.data(), dvy.data());
+  ImplicitViscosity viscosity(model, 1e-13, ImplicitViscosity::kDefaultRefactorThreshold,
+                              dense_factor_limit);
+  viscosity.solve(model, 0, h, model.nodes.ux.data(), model.nodes.uy.data(), fx.data(), fy.data(),
+                  dvx.data(), dvy.data());
   Eigen::VectorXd dv(2 * n);
   for (std::size_t i = 0; i < n; ++i) {
     dv[static_cast<Eigen::Index>(2 * i)] = dvx[i];
@@ -688,10 +691,30 @@ TEST(Imex, DenseFactorSolvesAsTheSparseOne) {
   compare("at the reference", 0);
   perturb(model, 0.002, 9);
   compare("stretch moved", -1);
+}
 
-  for (const DampingModel other : {DampingModel::corotational, DampingModel::reference_stiffness}) {
-    const Model m = damped_disc(0.3, other);
-    EXPECT_EQ(ImplicitViscosity(m, 1e-12).statistics().dense_bodies, 0);
+// The reference-stiffness and corotational grains' dense factor: a Cholesky factor computed in
+// double precision and kept in single precision. Its solve is the sparse double-precision one
+// to single-precision round-off (the factor read in float, the vector turned to float and
+// back), at two step sizes.
+TEST(Imex, SinglePrecisionFactorSolvesAsTheSparseOneToItsRoundOff) {
+  Mat2 f;
+  f << 1.1 * std::cos(0.7), -0.95 * std::sin(0.7), 1.1 * std::sin(0.7), 0.95 * std::cos(0.7);
+  for (const DampingModel dm : {DampingModel::corotational, DampingModel::reference_stiffness}) {
+    const Model m = damped_disc(0.3, dm);
+    EXPECT_EQ(ImplicitViscosity(m, 1e-12).statistics().dense_bodies, 1);
+    for (const double h : {1e-2, 2.5e-3}) {
+      const Eigen::VectorXd single =
+          imex_increment(dm, f, IntegratorParams::kDefaultDenseFactorLimit, h);
+      const Eigen::VectorXd exact = imex_increment(dm, f, 0, h);
+      const double relative = (single - exact).norm() / exact.norm();
+      std::printf("%s, h = %.1e: |dv_single - dv_sparse| / |dv| = %.1e\n",
+                  dm == DampingModel::corotational ? "corotational" : "reference_stiffness", h,
+                  relative);
+      // float epsilon 6e-8 times a small multiple: a wrong operator (h, alpha, mass or the
+      // rotation) moves dv by far more.
+      EXPECT_LT(relative, 1e-6);
+    }
   }
 }
 
