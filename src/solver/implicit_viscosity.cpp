@@ -222,7 +222,8 @@ ImplicitViscosity::ImplicitViscosity(const Model& model, double tolerance,
   }
 }
 
-bool ImplicitViscosity::prefers_dense_factor(BodySystem& s, const SparseMatrix& a, int limit) {
+bool ImplicitViscosity::prefers_dense_factor(BodySystem& s, const SparseMatrix& a,
+                                             int limit) const {
   const Eigen::Index n = a.rows();
   if (n > limit) return false;
   // The fill of the sparse factor, from one factorization of a matrix of the pattern (M + K0
@@ -230,7 +231,14 @@ bool ImplicitViscosity::prefers_dense_factor(BodySystem& s, const SparseMatrix& 
   s.factor.factorize(a);
   if (s.factor.info() != Eigen::Success) return false;
   const double fill = static_cast<double>(s.factor.matrixL().nestedExpression().nonZeros());
-  return fill > 0.5 * static_cast<double>(n * (n - 1) / 2);
+  // A single-precision dense factor (the solves done once per step) reads 4 bytes per entry of
+  // the lower triangle, the sparse double one 12 per entry of its fill (value and row index):
+  // dense from a third full. On the 2,000 grains of examples/shear-cell-full.toml (fill 35-50%,
+  // 109-211 nodes) the velocity phase took 31% less time with them, the whole step 1.21-1.27
+  // times less (bench/results/debian12-2core/dense_factor_single_paper_scale.csv). The exact
+  // solve's double-precision preconditioner stays dense from half full (dense_factor.csv).
+  const bool single = s.model != DampingModel::objective || objective_split_;
+  return fill > (single ? 1.0 / 3.0 : 0.5) * static_cast<double>(n * (n - 1) / 2);
 }
 
 void ImplicitViscosity::refresh_preconditioners() {

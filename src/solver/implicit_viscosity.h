@@ -54,20 +54,24 @@
 //                        constant about beta + 2 delta times the explicit one's.
 // Eigen factors A0 and A_ref; no hand-written factorization. A grain's factor is nearly dense:
 // each node couples with the ~12 of its MLS supports, and the fill of a sparse LDL^T (AMD
-// ordering) of a 73-node grain is 59% of the lower triangle. Bodies whose sparse factor would be
-// over half full (at most `dense_factor_limit` DOFs) keep a dense one instead:
-//   - the solves done once per step (reference_stiffness, corotational, the split solve): a
-//     Cholesky factor computed in double precision and kept in single precision, whose
-//     triangular solves read half the bytes of the sparse double-precision factor (42 kB of the
-//     lower triangle of a 73-node grain, against 77 kB); the factor comes from memory at each
-//     step. The increment moves by about 1e-7 relative. On bench/scenes/imex-cell.toml (60
-//     grains, 2 threads) whole reference_stiffness and corotational runs 1.16 and 1.20 times
-//     faster, mu within 2.7e-4 relative of the sparse factors
-//     (bench/results/debian12-2core/dense_factor_single_speed.csv, _accuracy.csv);
-//   - the exact objective solve's preconditioner: Eigen::LDLT in double precision, which its
-//     conjugate gradients apply 2 to 4 times per step while it is in cache: 6.6 against 10.4 us
-//     per solve and 164 against 194 us per factorization (dense_factor.csv), the objective
-//     step 8-24% cheaper; results differ from sparse factors in the last bits.
+// ordering) of a 73-node grain is 59% of the lower triangle, of the papers' 109-211-node grains
+// 35-50%. Bodies whose sparse factor would be full enough (below; at most `dense_factor_limit`
+// DOFs) keep a dense one instead:
+//   - the solves done once per step (reference_stiffness, corotational, the split solve), from
+//     a third full (prefers_dense_factor: the bytes read per solve): a Cholesky factor computed
+//     in double precision and kept in single precision, whose triangular solves read fewer bytes
+//     than the sparse double-precision factor (42 kB of the lower triangle of a 73-node grain,
+//     against 77 kB); the factor comes from memory at each step. The increment moves by about
+//     1e-7 relative. On bench/scenes/imex-cell.toml (60 grains, 2 threads) whole
+//     reference_stiffness and corotational runs 1.16 and 1.20 times faster, mu within 2.7e-4
+//     relative of the sparse factors (bench/results/debian12-2core/dense_factor_single_*.csv).
+//     The factor is stored as a full n x n matrix (Eigen has no packed triangular storage):
+//     0.8 GB for the 2,000 grains of examples/shear-cell-full.toml;
+//   - the exact objective solve's preconditioner, from half full: Eigen::LDLT in double
+//     precision, which its conjugate gradients apply 2 to 4 times per step while it is in
+//     cache: 6.6 against 10.4 us per solve and 164 against 194 us per factorization
+//     (dense_factor.csv), the objective step 8-24% cheaper; results differ from sparse factors
+//     in the last bits.
 // dense_factor_limit = 0: sparse double-precision factors everywhere.
 //
 // The force the update applied is F* = M dv / h (exactly what moved the velocities, whatever
@@ -172,7 +176,7 @@ class ImplicitViscosity {
   // one (the exact solve's preconditioner, the sparse bodies).
   bool single_precision_factor(const BodySystem& system) const;
   // Whether `system`'s body (its operator's pattern `a`) gets a dense factor.
-  static bool prefers_dense_factor(BodySystem& system, const SparseMatrix& a, int limit);
+  bool prefers_dense_factor(BodySystem& system, const SparseMatrix& a, int limit) const;
   // Objective model: C(F_ref) assembled anew (and factored) when refresh_preconditioners()
   // asked for it or the stretch has moved on by more than the threshold; true if it was.
   bool update_reference(const Model& model, BodySystem& system, const Mat2& rotation, double h);
