@@ -209,8 +209,9 @@ ImplicitViscosity::ImplicitViscosity(const Model& model, double tolerance,
     }
     SparseMatrix pattern = s.damping;
     pattern.diagonal() += s.mass;
-    s.factor.analyzePattern(pattern);
+    s.factor->analyzePattern(pattern);
     s.dense = prefers_dense_factor(s, pattern, dense_factor_limit);
+    if (s.dense) s.factor.reset();
     if (s.dense && s.model == DampingModel::objective) {
       // A dense body's objective operator is assembled dense (reassemble_objective_damping),
       // for the split solve only when it is factored: the sparse one is not kept. (The other
@@ -228,9 +229,9 @@ bool ImplicitViscosity::prefers_dense_factor(BodySystem& s, const SparseMatrix& 
   if (n > limit) return false;
   // The fill of the sparse factor, from one factorization of a matrix of the pattern (M + K0
   // is one: symmetric positive definite; Eigen gives L only once factored).
-  s.factor.factorize(a);
-  if (s.factor.info() != Eigen::Success) return false;
-  const double fill = static_cast<double>(s.factor.matrixL().nestedExpression().nonZeros());
+  s.factor->factorize(a);
+  if (s.factor->info() != Eigen::Success) return false;
+  const double fill = static_cast<double>(s.factor->matrixL().nestedExpression().nonZeros());
   // A single-precision dense factor (the solves done once per step) reads 4 bytes per entry of
   // the lower triangle, the sparse double one 12 per entry of its fill (value and row index):
   // dense from a third full. On the 2,000 grains of examples/shear-cell-full.toml (fill 35-50%,
@@ -277,8 +278,8 @@ void ImplicitViscosity::factorize(const Model& model, BodySystem& s, double h) {
   } else {
     SparseMatrix sparse = scale * s.damping;
     sparse.diagonal() += s.mass;
-    s.factor.factorize(sparse);
-    factored = s.factor.info() == Eigen::Success;
+    s.factor->factorize(sparse);
+    factored = s.factor->info() == Eigen::Success;
   }
   SG_VERIFY(factored, "imex: the factorization of M + h/2 C failed for body " << s.body);
   s.factor_h = h;
@@ -338,11 +339,11 @@ void ImplicitViscosity::apply_preconditioner(BodySystem& s, const Mat2& rotation
   // Eigen's factor.solve() step by step, with the last permutation into a scratch vector:
   // the same arithmetic, without the mask its in-place permutation allocates at every solve
   // (3% of the objective model's step).
-  z = s.factor.permutationP() * s.work_x;
-  s.factor.matrixL().solveInPlace(z);
-  z = s.factor.vectorD().asDiagonal().inverse() * z;
-  s.factor.matrixU().solveInPlace(z);
-  s.work_x.noalias() = s.factor.permutationPinv() * z;
+  z = s.factor->permutationP() * s.work_x;
+  s.factor->matrixL().solveInPlace(z);
+  z = s.factor->vectorD().asDiagonal().inverse() * z;
+  s.factor->matrixU().solveInPlace(z);
+  s.work_x.noalias() = s.factor->permutationPinv() * z;
   z.swap(s.work_x);
   rotate_pairs(rotation, false, z);
 }

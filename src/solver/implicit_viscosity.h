@@ -66,7 +66,8 @@
 //     reference_stiffness and corotational runs 1.16 and 1.20 times faster, mu within 2.7e-4
 //     relative of the sparse factors (bench/results/debian12-2core/dense_factor_single_*.csv).
 //     The factor is stored as a full n x n matrix (Eigen has no packed triangular storage):
-//     0.8 GB for the 2,000 grains of examples/shear-cell-full.toml;
+//     0.8 GB for the 2,000 grains of examples/shear-cell-full.toml, whose sparse factors (0.5
+//     GB) are released (the run's peak 2.2 GB against 1.9 with sparse factors);
 //   - the exact objective solve's preconditioner, from half full: Eigen::LDLT in double
 //     precision, which its conjugate gradients apply 2 to 4 times per step while it is in
 //     cache: 6.6 against 10.4 us per solve and 164 against 194 us per factorization
@@ -142,8 +143,11 @@ class ImplicitViscosity {
     // alpha K0, or C(F_ref) for the objective model: DOF 2 i (x) and 2 i + 1 (y) of node i
     // (empty for the objective model's dense bodies)
     SparseMatrix damping;
-    Eigen::VectorXd mass;                        // lumped mass per DOF
-    Eigen::SimplicialLDLT<SparseMatrix> factor;  // of M + h/2 damping (sparse bodies)
+    Eigen::VectorXd mass;  // lumped mass per DOF
+    // Of M + h/2 damping (sparse bodies; released for dense ones: half a gigabyte for the
+    // 2,000 grains of examples/shear-cell-full.toml).
+    std::unique_ptr<Eigen::SimplicialLDLT<SparseMatrix>> factor =
+        std::make_unique<Eigen::SimplicialLDLT<SparseMatrix>>();
     bool dense = false;  // the factor is dense: single_factor, or dense_factor (exact solve)
     Eigen::LDLT<Eigen::MatrixXd> dense_factor;
     Eigen::MatrixXd dense_damping;  // C(F_ref) (exact solve)
