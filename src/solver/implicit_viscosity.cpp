@@ -238,8 +238,7 @@ bool ImplicitViscosity::prefers_dense_factor(BodySystem& s, const SparseMatrix& 
   // 109-211 nodes) the velocity phase took 31% less time with them, the whole step 1.21-1.27
   // times less (bench/results/debian12-2core/dense_factor_single_paper_scale.csv). The exact
   // solve's double-precision preconditioner stays dense from half full (dense_factor.csv).
-  const bool single = s.model != DampingModel::objective || objective_split_;
-  return fill > (single ? 1.0 / 3.0 : 0.5) * static_cast<double>(n * (n - 1) / 2);
+  return fill > (solved_once_per_step(s) ? 1.0 / 3.0 : 0.5) * static_cast<double>(n * (n - 1) / 2);
 }
 
 void ImplicitViscosity::refresh_preconditioners() {
@@ -247,8 +246,12 @@ void ImplicitViscosity::refresh_preconditioners() {
     s->reference_gradients.clear();
 }
 
+bool ImplicitViscosity::solved_once_per_step(const BodySystem& s) const {
+  return s.model != DampingModel::objective || objective_split_;
+}
+
 bool ImplicitViscosity::single_precision_factor(const BodySystem& s) const {
-  return s.dense && (s.model != DampingModel::objective || objective_split_);
+  return s.dense && solved_once_per_step(s);
 }
 
 void ImplicitViscosity::factorize(const Model& model, BodySystem& s, double h) {

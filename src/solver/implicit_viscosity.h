@@ -175,9 +175,11 @@ class ImplicitViscosity {
   std::vector<Mat2*> gradient_outputs_;
 
   void factorize(const Model& model, BodySystem& system, double h);
-  // Whether `system` keeps a single-precision Cholesky factor (its solve is the increment:
-  // the reference-stiffness and corotational models, the split solve) rather than a double
-  // one (the exact solve's preconditioner, the sparse bodies).
+  // Whether `system`'s increment is one solve with its stored factor (reference_stiffness,
+  // corotational, the split solve), not conjugate gradients (the exact objective solve).
+  bool solved_once_per_step(const BodySystem& system) const;
+  // Whether `system` keeps a single-precision Cholesky factor: a dense body solved once per
+  // step (the exact solve's preconditioner and the sparse bodies keep double precision).
   bool single_precision_factor(const BodySystem& system) const;
   // Whether `system`'s body (its operator's pattern `a`) gets a dense factor.
   bool prefers_dense_factor(BodySystem& system, const SparseMatrix& a, int limit) const;
