@@ -67,19 +67,17 @@ std::vector<double> run_settings(const ScenarioDef& s, const IntegratorChoice& i
   if (integrator.params.implicit_viscosity) {
     v.insert(v.end(), {1.0, s.imex_tolerance, s.imex_refactor_threshold});
     if (!s.imex_dense_factors) v.push_back(-1.0);  // (only when off: earlier checkpoints stay)
-    // (Only when it matters, an objective-damped material: a checkpoint of the exact solve,
-    // the only one before the split, does not resume under the split one.)
-    const bool objective_damped =
-        std::any_of(s.materials.begin(), s.materials.end(), [](const MaterialDef& m) {
-          return m.damping > 0.0 && m.damping_model == DampingModel::objective;
-        });
-    if (s.imex_objective_split && objective_damped) v.push_back(-2.0);
-    // (Likewise: the reference-stiffness and corotational grains' single-precision factors.)
-    const bool stored_factor_damped =
-        std::any_of(s.materials.begin(), s.materials.end(), [](const MaterialDef& m) {
-          return m.damping > 0.0 && m.damping_model != DampingModel::objective;
-        });
-    if (s.imex_dense_factors && stored_factor_damped) v.push_back(-3.0);
+    // (Only when it matters, a material damped by that model: a checkpoint of the exact solve,
+    // the only one before the split, does not resume under the split one; nor one of the
+    // reference-stiffness and corotational grains' sparse factors under their single-precision
+    // ones.)
+    const auto damped = [&](bool objective) {
+      return std::any_of(s.materials.begin(), s.materials.end(), [&](const MaterialDef& m) {
+        return m.damping > 0.0 && (m.damping_model == DampingModel::objective) == objective;
+      });
+    };
+    if (s.imex_objective_split && damped(true)) v.push_back(-2.0);
+    if (s.imex_dense_factors && damped(false)) v.push_back(-3.0);
   }
   if (!s.contact_laws.empty()) {
     const ContactSettings c = contact_settings(s);

@@ -326,7 +326,7 @@ void ImplicitViscosity::apply_preconditioner(BodySystem& s, const Mat2& rotation
                                              const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
   s.work_x = r;
   rotate_pairs(rotation, true, s.work_x);
-  if (s.single_factor.size() > 0) {
+  if (single_precision_factor(s)) {
     s.single = s.work_x.cast<float>();
     s.single_factor.triangularView<Eigen::Lower>().solveInPlace(s.single);
     s.single_factor.triangularView<Eigen::Lower>().adjoint().solveInPlace(s.single);

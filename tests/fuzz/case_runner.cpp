@@ -106,8 +106,9 @@ std::string non_finite_output(const Sandbox& s) {
       const std::string where = " in " + file.lexically_relative(s.output_root()).string() +
                                 " line " + std::to_string(line_number);
       if (json) {
+        const std::string numbers = outside_json_strings(line);
         for (const char* bad : {"NaN", "Infinity"})
-          if (outside_json_strings(line).find(bad) != std::string::npos)
+          if (numbers.find(bad) != std::string::npos)
             return "wrote '" + std::string(bad) + "'" + where;
         continue;
       }

@@ -33,6 +33,13 @@ int nodes(const Model& model) {
   return static_cast<int>(model.node_count());
 }
 
+// F = R(theta) diag(sx, sy): a stretch along the axes, then a turn by theta.
+Mat2 turned_stretch(double sx, double sy, double theta) {
+  Mat2 f;
+  f << sx * std::cos(theta), -sy * std::sin(theta), sx * std::sin(theta), sy * std::cos(theta);
+  return f;
+}
+
 // Deterministic pseudo-random numbers in [-1, 1).
 struct Lcg {
   std::uint64_t state = 12345;
@@ -73,8 +80,7 @@ TEST(DampingModels, ReferenceStiffnessForceIsMinusAlphaK0v) {
   std::printf("K0 assembled vs finite differences of the elastic force: %.2e\n", k_error);
   EXPECT_LT(k_error, 1e-7);
   // At a rotated and stretched state with random velocities: f_v = -alpha K0 v.
-  Mat2 f;
-  f << 1.1 * std::cos(0.7), -std::sin(0.7), 1.1 * std::sin(0.7), std::cos(0.7);
+  const Mat2 f = turned_stretch(1.1, 1.0, 0.7);
   set_affine_deformation(model, 0, f);
   Lcg random;
   Eigen::VectorXd v(2 * nodes(model));
@@ -542,8 +548,7 @@ TEST(Imex, AssembledObjectiveOperatorIsTheMatrixFreeOne) {
   std::printf("C(I) vs alpha K0: %.2e\n", (at_rest - k0).norm() / k0.norm());
   EXPECT_LT((at_rest - k0).norm(), 1e-14 * k0.norm());
 
-  Mat2 f;
-  f << 1.3 * std::cos(0.4), -0.9 * std::sin(0.4), 1.3 * std::sin(0.4), 0.9 * std::cos(0.4);
+  const Mat2 f = turned_stretch(1.3, 0.9, 0.4);
   set_affine_deformation(model, 0, f);
   perturb(model, 0.02, 7);
   body_deformation_gradients(model, 0, model.nodes.ux.data(), model.nodes.uy.data(), gradients);
@@ -653,12 +658,11 @@ TEST(Imex, ObjectiveFirstGuessFollowsASlowDeformation) {
 
 // The objective model's grains get dense factors (their sparse factor would be over half full);
 // a dense factor solves as the sparse one to round-off: where the reference was just built (no
-// iteration: the factor alone) and after the stretch has moved (CG, both to 1e-12). The models
-// that solve once per step keep the sparse factor.
+// iteration: the factor alone) and after the stretch has moved (CG, both to 1e-12). (The models
+// that solve once per step keep single-precision factors: the next test.)
 TEST(Imex, DenseFactorSolvesAsTheSparseOne) {
   Model model = damped_disc(0.3, DampingModel::objective);
-  Mat2 f;
-  f << 1.3 * std::cos(0.4), -0.9 * std::sin(0.4), 1.3 * std::sin(0.4), 0.9 * std::cos(0.4);
+  const Mat2 f = turned_stretch(1.3, 0.9, 0.4);
   set_affine_deformation(model, 0, f);
   perturb(model, 0.02, 5);
   ImplicitViscosity dense(model, 1e-12);
@@ -698,8 +702,7 @@ TEST(Imex, DenseFactorSolvesAsTheSparseOne) {
 // to single-precision round-off (the factor read in float, the vector turned to float and
 // back), at two step sizes.
 TEST(Imex, SinglePrecisionFactorSolvesAsTheSparseOneToItsRoundOff) {
-  Mat2 f;
-  f << 1.1 * std::cos(0.7), -0.95 * std::sin(0.7), 1.1 * std::sin(0.7), 0.95 * std::cos(0.7);
+  const Mat2 f = turned_stretch(1.1, 0.95, 0.7);
   for (const DampingModel dm : {DampingModel::corotational, DampingModel::reference_stiffness}) {
     const Model m = damped_disc(0.3, dm);
     EXPECT_EQ(ImplicitViscosity(m, 1e-12).statistics().dense_bodies, 1);
@@ -791,8 +794,7 @@ TEST(ImexSplit, TheMarginKeepsTheHeavilyDampedModesStable) {
 // operator, margin or rotation would be off by percents).
 TEST(ImexSplit, SolvesWithTheReferenceOperatorAndItsMargin) {
   Model model = damped_disc(0.3, DampingModel::objective);
-  Mat2 f;
-  f << 1.08 * std::cos(0.3), -0.95 * std::sin(0.3), 1.08 * std::sin(0.3), 0.95 * std::cos(0.3);
+  const Mat2 f = turned_stretch(1.08, 0.95, 0.3);
   set_affine_deformation(model, 0, f);
   perturb(model, 0.005, 7);
   const double delta = 0.1, beta = (1 + delta) * (1 + delta) - 1, h = 3e-3;
