@@ -23,6 +23,7 @@
 #include "../tests/scenes/shear_cell_scenario.h"
 #include "scenario/scenario.h"
 #include "solver/implicit_viscosity.h"
+#include "solver/packed_cholesky_factor.h"
 #include "solver/state_snapshot.h"
 #include "solver/step_controller.h"
 #include "solver/stepper.h"
@@ -198,6 +199,64 @@ void ViscousFactor(benchmark::State& state) {
 BENCHMARK(ViscousFactor)
     ->ArgsProduct({{0, 1, 2}, {0, 1}})
     ->ArgNames({"kind", "factorize"})
+    ->Unit(benchmark::kMicrosecond)
+    ->UseRealTime();
+
+// The single-precision dense factor's solve (solver/packed_cholesky_factor.h): the grains' A0
+// of the cell (as ViscousFactor), factored in double precision, kept in single precision
+// either as a full n x n matrix (storage 0, Eigen's triangular solves of its lower triangle)
+// or packed column by column (1), solved grain after grain for one right-hand side. `copies`
+// copies of the 60 factors: 1 (60 grains, 2.6 MB of lower triangles: they stay in cache) or 7
+// (420 grains, 18 MB, about the 400-grain cell's: they come from memory at each pass).
+// Reports microseconds per grain.
+//   build/bench/bench_softgrain --benchmark_filter=PackedCholeskySolve
+void PackedCholeskySolve(benchmark::State& state) {
+  const bool packed = state.range(0) != 0;
+  const auto copies = static_cast<int>(state.range(1));
+  const ScenarioDef s = imex_cell(0.02, DampingModel::reference_stiffness, true);
+  const Model model = build_model(s);
+  std::vector<Eigen::MatrixXf> full;
+  std::vector<PackedCholeskyFactor> factors;
+  for (int copy = 0; copy < copies; ++copy)
+    for (BodyId b = 0; b < static_cast<BodyId>(model.bodies.size()); ++b) {
+      if (!has_implicit_viscosity(model, b)) continue;
+      Eigen::MatrixXd a = (0.5 * 3.2e-3) * Eigen::MatrixXd(assemble_damping_stiffness(model, b));
+      const Body& body = model.body(b);
+      for (int i = 0; i < 2 * body.node_count(); ++i)
+        a(i, i) += model.nodes.mass[static_cast<std::size_t>(body.node_begin + i / 2)];
+      Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> cholesky(a);
+      if (packed)
+        factors.emplace_back().assign(a);
+      else
+        full.push_back(a.cast<float>());
+    }
+  const std::size_t grains = packed ? factors.size() : full.size();
+  std::vector<Eigen::VectorXf> x(grains);
+  const auto wall_start = std::chrono::steady_clock::now();
+  for (auto _ : state) {
+    for (std::size_t k = 0; k < grains; ++k) {
+      if (packed) {
+        x[k].setOnes(factors[k].size());
+        factors[k].solve_in_place(x[k]);
+      } else {
+        x[k].setOnes(full[k].rows());
+        full[k].triangularView<Eigen::Lower>().solveInPlace(x[k]);
+        full[k].triangularView<Eigen::Lower>().adjoint().solveInPlace(x[k]);
+      }
+    }
+    benchmark::ClobberMemory();
+  }
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  state.counters["us_per_grain"] =
+      1e6 * wall / static_cast<double>(state.iterations()) / static_cast<double>(grains);
+  state.SetLabel(std::string(packed ? "packed" : "full matrix") + ", " + std::to_string(grains) +
+                 " grains");
+}
+
+BENCHMARK(PackedCholeskySolve)
+    ->ArgsProduct({{0, 1}, {1, 7}})
+    ->ArgNames({"packed", "copies"})
     ->Unit(benchmark::kMicrosecond)
     ->UseRealTime();
 

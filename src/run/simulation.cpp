@@ -78,6 +78,9 @@ std::vector<double> run_settings(const ScenarioDef& s, const IntegratorChoice& i
     };
     if (s.imex_objective_split && damped(true)) v.push_back(-2.0);
     if (s.imex_dense_factors && damped(false)) v.push_back(-3.0);
+    // (Nor one of the full-matrix single-precision factors under the packed ones.)
+    if (s.imex_dense_factors && (damped(false) || (s.imex_objective_split && damped(true))))
+      v.push_back(-4.0);
   }
   if (!s.contact_laws.empty()) {
     const ContactSettings c = contact_settings(s);

@@ -272,7 +272,7 @@ void ImplicitViscosity::factorize(const Model& model, BodySystem& s, double h) {
     a.diagonal() += s.mass;
     Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> cholesky(a);
     factored = cholesky.info() == Eigen::Success;
-    s.single_factor = a.cast<float>();
+    s.single_factor.assign(a);
   } else if (s.dense) {
     a.noalias() = scale * s.dense_damping;
     a.diagonal() += s.mass;
@@ -328,8 +328,7 @@ void ImplicitViscosity::apply_preconditioner(BodySystem& s, const Mat2& rotation
   rotate_pairs(rotation, true, s.work_x);
   if (single_precision_factor(s)) {
     s.single = s.work_x.cast<float>();
-    s.single_factor.triangularView<Eigen::Lower>().solveInPlace(s.single);
-    s.single_factor.triangularView<Eigen::Lower>().adjoint().solveInPlace(s.single);
+    s.single_factor.solve_in_place(s.single);
     z = s.single.cast<double>();
     rotate_pairs(rotation, false, z);
     return;

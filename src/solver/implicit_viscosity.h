@@ -65,9 +65,9 @@
 //     1e-7 relative. On bench/scenes/imex-cell.toml (60 grains, 2 threads) whole
 //     reference_stiffness and corotational runs 1.16 and 1.20 times faster, mu within 2.7e-4
 //     relative of the sparse factors (bench/results/debian12-2core/dense_factor_single_*.csv).
-//     The factor is stored as a full n x n matrix (Eigen has no packed triangular storage):
-//     0.8 GB for the 2,000 grains of examples/shear-cell-full.toml, whose sparse factors (0.5
-//     GB) are released (the run's peak 2.2 GB against 1.9 with sparse factors);
+//     The lower triangle is packed column after column (PackedCholeskyFactor: Eigen has no
+//     packed triangular storage), 0.4 GB for the 2,000 grains of
+//     examples/shear-cell-full.toml, whose sparse factors (0.5 GB) are released;
 //   - the exact objective solve's preconditioner, from half full: Eigen::LDLT in double
 //     precision, which its conjugate gradients apply 2 to 4 times per step while it is in
 //     cache: 6.6 against 10.4 us per solve and 164 against 194 us per factorization
@@ -89,6 +89,7 @@
 
 #include "model/model.h"
 #include "solver/integrator_params.h"
+#include "solver/packed_cholesky_factor.h"
 
 namespace sg {
 
@@ -154,7 +155,7 @@ class ImplicitViscosity {
     // The dense bodies of the solves done once per step: the Cholesky factor L of M + h/2
     // alpha K0 or of M + h/2 (1 + beta) C(F_ref) (split) in its lower triangle, single
     // precision; `single`: a vector of that precision (scratch).
-    Eigen::MatrixXf single_factor;
+    PackedCholeskyFactor single_factor;
     Eigen::VectorXf single;
     double factor_h = 0.0;
     std::vector<Mat2> gradients;            // objective model: F per Gauss point
