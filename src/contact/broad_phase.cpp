@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/error.h"
 #include "geometry/polygon.h"
@@ -278,26 +279,30 @@ bool BroadPhase::needs_rebuild(const BroadPhaseInput& input) const {
       input.segment_start.size() != built_segment_start_.size() ||
       input.segment_end.size() != built_segment_end_.size())
     return true;
+  // The box of the nearest-image displacements (header): rebuild when half its diagonal
+  // exceeds skin / 2, that is when its squared diagonal exceeds skin^2.
   const double period = params_.x_max - params_.x_min;
-  const double limit2 = 0.25 * params_.skin * params_.skin;  // (skin / 2)^2
-  const auto moved_too_far = [&](const Vec2& now, const Vec2& then) {
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  Vec2 lo(kInfinity, kInfinity), hi(-kInfinity, -kInfinity);
+  const auto include = [&](const Vec2& now, const Vec2& then) {
     Vec2 d = now - then;
     // Nearest image: a position wrapped across the seam has not moved by L. (Only a move of
     // over half a period can be a wrap: the test skips the division and rounding otherwise,
     // and at exactly half a period either image is as far.)
     if (params_.periodic_x && std::abs(d.x()) > 0.5 * period)
       d.x() -= period * std::round(d.x() / period);
-    return d.squaredNorm() > limit2;
+    lo = lo.cwiseMin(d);
+    hi = hi.cwiseMax(d);
   };
-  for (std::size_t i = 0; i < built_nodes_.size(); ++i) {
-    if (moved_too_far(input.nodes[i], built_nodes_[i])) return true;
-  }
+  for (std::size_t i = 0; i < built_nodes_.size(); ++i)
+    include(input.nodes[i], built_nodes_[i]);
   for (std::size_t i = 0; i < built_segment_start_.size(); ++i) {
-    if (moved_too_far(input.segment_start[i], built_segment_start_[i]) ||
-        moved_too_far(input.segment_end[i], built_segment_end_[i]))
-      return true;
+    include(input.segment_start[i], built_segment_start_[i]);
+    include(input.segment_end[i], built_segment_end_[i]);
   }
-  return false;
+  if (built_nodes_.empty() && built_segment_start_.empty()) return false;
+  // (A NaN displacement is caught before: the contact system checks the positions.)
+  return (hi - lo).squaredNorm() > params_.skin * params_.skin;
 }
 
 void BroadPhase::capture(BroadPhaseState& state) const {

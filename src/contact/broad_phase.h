@@ -17,12 +17,16 @@
 // Guarantee (no missed contact). build() lists every pair whose distance (point to
 // segment, nearest periodic image) is < cutoff + skin. The distance from a point to a
 // segment changes by at most the point's displacement plus the largest displacement of
-// the segment's end points (every point of the segment is a convex combination of them).
-// So as long as needs_rebuild() is false - no node and no segment end point has moved by
-// more than skin / 2 (nearest-image displacement) since the last build - every pair whose
-// current distance is < cutoff is in candidates():  d_build <= d_now + skin/2 + skin/2
-// < cutoff + skin. The test test_broad_phase.cpp checks this against brute force on random
-// moving configurations that cross the periodic seam.
+// the segment's end points (every point of the segment is a convex combination of them),
+// and not at all when everything moves by the same translation c: it changes by at most
+// |d_node - c| + max |d_end - c| for any c. needs_rebuild() takes c at the centre of the box
+// of all displacements d (nearest image) since the last build, so that |d - c| <= r, half the
+// box's diagonal, for every node and segment end point. As long as r <= skin / 2 every pair
+// whose current distance is < cutoff is in candidates():  d_build <= d_now + skin/2 + skin/2
+// < cutoff + skin. (With c = 0, the plain Verlet rule, a shear cell rebuilt twice as often:
+// its top moves by V t and its bottom stays, a box of width V t, so r = V t / 2 where the
+// largest displacement is V t.) The test test_broad_phase.cpp checks this against brute force
+// on random moving configurations that cross the periodic seam, and on ones that translate.
 //
 // Determinism: candidates are sorted by (node, segment); nothing depends on threads or on
 // the order of insertion beyond the input indices.
@@ -89,8 +93,9 @@ class BroadPhase {
   // Lists all pairs closer than cutoff + skin; remembers the positions for needs_rebuild().
   void build(const BroadPhaseInput& input);
 
-  // True before the first build, when the numbers of nodes or segments changed, or when a
-  // node or a segment end point moved by more than skin / 2 since the last build.
+  // True before the first build, when the numbers of nodes or segments changed, or when the
+  // displacements of the nodes and segment end points since the last build, less the centre
+  // of their box, reach more than skin / 2 (above).
   bool needs_rebuild(const BroadPhaseInput& input) const;
 
   // Sorted by (node, segment).

@@ -100,6 +100,17 @@ std::string describe_viscous_solves(const ViscousSolveStatistics& st) {
   return note.str();
 }
 
+std::string describe_contacts(const ContactSystem* contacts, long steps) {
+  if (contacts == nullptr) return "";
+  const int builds = contacts->broad_phase().build_count();
+  std::ostringstream note;
+  note << std::setprecision(3) << "# contacts: " << builds << " broad-phase builds in " << steps
+       << " steps";
+  if (builds > 0) note << " (one every " << static_cast<double>(steps) / builds << " steps)";
+  note << ", " << contacts->broad_phase().candidates().size() << " candidate pairs at the last\n";
+  return note.str();
+}
+
 std::string describe_step_control(const StepStatistics& st) {
   std::ostringstream note;
   note << std::setprecision(6) << "# steps: " << st.accepted << " accepted, " << st.rejected

@@ -21,6 +21,10 @@ std::string describe_step_control(const StepStatistics& statistics);
 // The IMEX integrator's solves ("" for the explicit one).
 std::string describe_viscous_solves(const ViscousSolveStatistics& statistics);
 
+// The contact broad phase: how often its candidate list was rebuilt over the run's `steps`
+// ("" without contacts).
+std::string describe_contacts(const ContactSystem* contacts, long steps);
+
 // The profile: wall seconds and share per phase, and the time per step.
 std::string describe_profile(const StepProfile& profile, double wall_seconds);
 

@@ -218,6 +218,7 @@ RunSummary RunSession::close() {
     write_run_log(folder_.run_log(), scenario_, sim,
                   resume_note_ + describe_step_control(sim.controller.statistics()) +
                       describe_viscous_solves(sim.solver.viscous_statistics()) +
+                      describe_contacts(sim.contacts.get(), sim.solver.state().step) +
                       describe_profile(profile, summary.wall_seconds));
   if (options_.progress)
     announce_end(*options_.progress, options_.progress_on_terminal, sim, summary, series_,
