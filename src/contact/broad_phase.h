@@ -23,10 +23,12 @@
 // of all displacements d (nearest image) since the last build, so that |d - c| <= r, half the
 // box's diagonal, for every node and segment end point. As long as r <= skin / 2 every pair
 // whose current distance is < cutoff is in candidates():  d_build <= d_now + skin/2 + skin/2
-// < cutoff + skin. (With c = 0, the plain Verlet rule, a shear cell rebuilt twice as often:
-// its top moves by V t and its bottom stays, a box of width V t, so r = V t / 2 where the
-// largest displacement is V t.) The test test_broad_phase.cpp checks this against brute force
-// on random moving configurations that cross the periodic seam, and on ones that translate.
+// < cutoff + skin. (With c = 0, the plain Verlet rule, a layer sheared as a whole rebuilds
+// twice as often: its top moves by V t and its bottom stays, a box of width V t, so r = V t / 2
+// where the largest displacement is V t. On the 400-grain imex cell the grains' own motion
+// fills the box: 511 builds in 1,529 steps against 539.) The test test_broad_phase.cpp checks
+// this against brute force on random moving configurations that cross the periodic seam, and
+// on ones that translate.
 //
 // Determinism: candidates are sorted by (node, segment); nothing depends on threads or on
 // the order of insertion beyond the input indices.
