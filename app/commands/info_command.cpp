@@ -3,6 +3,8 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <sstream>
+#include <string>
 
 #include "command_registry.h"
 #include "model/force_kernel.h"
@@ -20,13 +22,23 @@ bool has_damped_body(const Model& model) {
   return false;
 }
 
+std::string format_mib(double bytes) {
+  std::ostringstream s;
+  s << std::setprecision(3) << bytes / 1048576.0;
+  return s.str();
+}
+
 // The integrators compared on the model's initial state; the model is left as it was.
+// `imex`: the scenario's imex settings, measured whichever integrator is `configured`.
 void print_integrators(Model& model, ContactSystem* contacts, const ScenarioDef& scenario,
-                       double contact_stiffness, const IntegratorParams& configured) {
+                       double contact_stiffness, const IntegratorParams& configured,
+                       const IntegratorParams& imex) {
   std::cout << "  integrators (measured over 10 steps from the initial state):\n";
   for (const IntegratorCost& c : compare_integrators(model, contacts, scenario.time_step_safety,
-                                                     contact_stiffness, configured, 10)) {
+                                                     contact_stiffness, imex, 10)) {
     const bool is_configured = c.integrator.implicit_viscosity == configured.implicit_viscosity;
+    const std::string matrices =
+        c.matrix_bytes > 0.0 ? ", " + format_mib(c.matrix_bytes) + " MiB of factors" : "";
     const double steps_per_unit = 1.0 / c.stable.dt;
     std::cout << "    " << std::left << std::setw(9) << c.integrator.name() << std::right << " dt "
               << std::setprecision(3) << c.stable.dt << " ("
@@ -34,7 +46,8 @@ void print_integrators(Model& model, ContactSystem* contacts, const ScenarioDef&
               << 1e3 * c.seconds_per_step << " ms/step, " << c.seconds_per_step * steps_per_unit
               << " s per time unit, "
               << c.seconds_per_step * steps_per_unit * scenario.duration / 3600.0 << " h for "
-              << scenario.duration << " time units" << (is_configured ? "  <- run" : "") << "\n";
+              << scenario.duration << " time units" << matrices << (is_configured ? "  <- run" : "")
+              << "\n";
   }
 }
 
@@ -79,11 +92,13 @@ int info(const std::string& file) {
               << scenario.duration << " time units\n";
   std::cout << "  integrator:    " << describe(integrator) << "\n";
   if (!mass_scaling.empty()) std::cout << "  " << mass_scaling << "\n";
-  std::cout << "  memory:        " << bytes / 1048576.0 << " MiB (node state and shape rows)\n";
+  std::cout << "  memory:        " << bytes / 1048576.0
+            << " MiB (node state and shape rows; the imex integrator's factors below)\n";
   std::cout << "  force kernel:  " << force_kernel().isa
             << " (SOFTGRAIN_SIMD=default selects the baseline one)\n";
   if (stable.limiting_body >= 0 && has_damped_body(model))
-    print_integrators(model, contacts.get(), scenario, contact_stiffness, integrator.params);
+    print_integrators(model, contacts.get(), scenario, contact_stiffness, integrator.params,
+                      imex_integrator(scenario));
   return 0;
 }
 

@@ -50,7 +50,7 @@ py::list integrator_costs(Simulation& sim, const ScenarioDef& def) {
   {
     py::gil_scoped_release release;
     costs = compare_integrators(sim.model, sim.contacts.get(), def.time_step_safety,
-                                contact_stiffness, configured, 10);
+                                contact_stiffness, imex_integrator(def), 10);
   }
   py::list out;
   for (const IntegratorCost& c : costs) {
@@ -62,6 +62,7 @@ py::list integrator_costs(Simulation& sim, const ScenarioDef& def) {
     d["seconds_per_time_unit"] = c.seconds_per_step / c.stable.dt;
     d["hours_for_duration"] = c.seconds_per_step / c.stable.dt * def.duration / 3600.0;
     d["configured"] = c.integrator.implicit_viscosity == configured.implicit_viscosity;
+    if (c.integrator.implicit_viscosity) d["factors_mib"] = c.matrix_bytes / 1048576.0;
     out.append(d);
   }
   return out;

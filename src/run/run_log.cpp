@@ -96,6 +96,7 @@ std::string describe_viscous_solves(const ViscousSolveStatistics& st) {
        << st.factorizations << " factorizations, " << st.reassemblies
        << " reassemblies of the objective operator";
   if (st.dense_bodies > 0) note << "; dense factors for " << st.dense_bodies << " bodies";
+  note << "; factors and operators " << st.matrix_bytes / 1048576.0 << " MiB";
   note << "\n";
   return note.str();
 }

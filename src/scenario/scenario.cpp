@@ -176,12 +176,16 @@ ContactSettings contact_settings(const ScenarioDef& scenario) {
   return settings;
 }
 
-IntegratorChoice resolve_integrator(const ScenarioDef& scenario, const Model& model,
-                                    double contact_stiffness) {
-  const IntegratorParams imex = IntegratorParams::imex(
+IntegratorParams imex_integrator(const ScenarioDef& scenario) {
+  return IntegratorParams::imex(
       scenario.imex_tolerance, scenario.imex_refactor_threshold,
       scenario.imex_dense_factors ? IntegratorParams::kDefaultDenseFactorLimit : 0,
       scenario.imex_objective_split);
+}
+
+IntegratorChoice resolve_integrator(const ScenarioDef& scenario, const Model& model,
+                                    double contact_stiffness) {
+  const IntegratorParams imex = imex_integrator(scenario);
   if (scenario.integrator == ScenarioIntegrator::automatic)
     return choose_default_integrator(model, scenario.time_step_safety, contact_stiffness, imex,
                                      scenario.fixed_time_step, scenario.step_tolerance);

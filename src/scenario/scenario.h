@@ -151,6 +151,9 @@ double finest_contour_spacing(const ScenarioDef& scenario);
 // The material-pair table of a scenario (requires contact laws).
 MaterialPairTable contact_law_table(const ScenarioDef& scenario);
 ContactSettings contact_settings(const ScenarioDef& scenario);
+// The IMEX integrator with the scenario's [time] imex_* settings (whichever integrator it
+// runs: `softgrain info` compares both).
+IntegratorParams imex_integrator(const ScenarioDef& scenario);
 // The integrator a run of `scenario` steps with on `model` (built, masses not yet scaled), for
 // the stepper, the stable step and mass scaling, and its step check: as written in [time], or,
 // when `integrator` is absent, imex where it is faster (solver/default_integrator.h; this

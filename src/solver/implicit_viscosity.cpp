@@ -481,6 +481,28 @@ void ImplicitViscosity::solve(const Model& model, BodyId b, double h, const doub
   copy_increment(s.x, n, dvx, dvy);
 }
 
+namespace {
+
+// Values (double) and row indices (int) of a compressed sparse matrix.
+double sparse_bytes(const Eigen::SparseMatrix<double>& m) {
+  return static_cast<double>(m.nonZeros()) * (sizeof(double) + sizeof(int)) +
+         static_cast<double>(m.outerSize() + 1) * sizeof(int);
+}
+
+double dense_bytes(const Eigen::MatrixXd& m) {
+  return static_cast<double>(m.size()) * sizeof(double);
+}
+
+}  // namespace
+
+double ImplicitViscosity::matrix_bytes(const BodySystem& s) const {
+  double bytes = sparse_bytes(s.damping) + dense_bytes(s.dense_damping);
+  if (s.factor_h == 0.0) return bytes;  // not factored yet (the first solve factors)
+  if (single_precision_factor(s)) return bytes + static_cast<double>(s.single_factor.bytes());
+  if (s.dense) return bytes + dense_bytes(s.dense_factor.matrixLDLT());
+  return bytes + sparse_bytes(s.factor->matrixL().nestedExpression());
+}
+
 ViscousSolveStatistics ImplicitViscosity::statistics() const {
   ViscousSolveStatistics total;
   for (const auto& s : systems_) {
@@ -489,6 +511,7 @@ ViscousSolveStatistics ImplicitViscosity::statistics() const {
     total.factorizations += s->statistics.factorizations;
     total.reassemblies += s->statistics.reassemblies;
     total.dense_bodies += s->dense ? 1 : 0;
+    total.matrix_bytes += matrix_bytes(*s);
   }
   return total;
 }

@@ -103,6 +103,9 @@ struct ViscousSolveStatistics {
   long factorizations = 0;  // numeric factorizations of A0 or A_ref
   long reassemblies = 0;    // objective model: assemblies of C(F_ref) at a new reference
   long dense_bodies = 0;    // bodies whose factor is dense
+  // The bytes the factors (once factored: after the first solve) and the stored operators
+  // hold, values and indices (not the per-body vectors: a few times 2 n doubles).
+  double matrix_bytes = 0.0;
 };
 
 class ImplicitViscosity {
@@ -176,6 +179,8 @@ class ImplicitViscosity {
   std::vector<Mat2*> gradient_outputs_;
 
   void factorize(const Model& model, BodySystem& system, double h);
+  // ViscousSolveStatistics::matrix_bytes of one body.
+  double matrix_bytes(const BodySystem& system) const;
   // Whether `system`'s increment is one solve with its stored factor (reference_stiffness,
   // corotational, the split solve), not conjugate gradients (the exact objective solve).
   bool solved_once_per_step(const BodySystem& system) const;

@@ -23,6 +23,7 @@ IntegratorCost measure(Model& model, ContactSystem* contacts, double safety,
     solver.step(cost.stable.dt);
   cost.seconds_per_step =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / steps;
+  cost.matrix_bytes = solver.viscous_statistics().matrix_bytes;
   restore_state(initial, solver, contacts);
   return cost;
 }

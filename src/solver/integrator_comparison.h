@@ -16,6 +16,7 @@ struct IntegratorCost {
   IntegratorParams integrator;
   StableStep stable;              // its stable step on the model's current state
   double seconds_per_step = 0.0;  // wall time, measured (timing only)
+  double matrix_bytes = 0.0;      // IMEX: its factors and operators (ViscousSolveStatistics)
 };
 
 // The explicit integrator, then the IMEX one with `imex`'s settings, each timed over `steps`

@@ -697,6 +697,31 @@ TEST(Imex, DenseFactorSolvesAsTheSparseOne) {
   compare("stretch moved", -1);
 }
 
+// The statistics' matrix_bytes counts what a body keeps: before its first solve only its
+// operator (alpha K0, sparse: 12 bytes per entry and the column starts); after it, the
+// packed single-precision factor as well (4 bytes per lower-triangle entry), or with dense
+// factors off the sparse factor's entries instead.
+TEST(Imex, MatrixBytesCountTheOperatorAndTheFactor) {
+  const Model m = damped_disc(0.3, DampingModel::reference_stiffness);
+  const auto dofs = static_cast<double>(2 * m.node_count());
+  const double k0 =
+      static_cast<double>(assemble_damping_stiffness(m, 0).nonZeros()) * 12.0 + (dofs + 1.0) * 4.0;
+  const auto n = static_cast<std::size_t>(m.node_count());
+  std::vector<double> f(n, 1.0), dvx(n), dvy(n);
+  for (const int limit : {IntegratorParams::kDefaultDenseFactorLimit, 0}) {
+    ImplicitViscosity viscosity(m, 1e-12, ImplicitViscosity::kDefaultRefactorThreshold, limit);
+    EXPECT_EQ(viscosity.statistics().matrix_bytes, k0);
+    viscosity.solve(m, 0, 1e-2, m.nodes.ux.data(), m.nodes.uy.data(), f.data(), f.data(),
+                    dvx.data(), dvy.data());
+    const double factor = viscosity.statistics().matrix_bytes - k0;
+    if (limit > 0)
+      EXPECT_EQ(factor, dofs * (dofs + 1.0) / 2.0 * 4.0);
+    else  // a sparse LDL^T: between a diagonal and a full lower triangle, 12 bytes an entry
+      EXPECT_TRUE(factor > dofs * 12.0 && factor < dofs * (dofs + 1.0) / 2.0 * 12.0 + 4.0 * dofs)
+          << factor;
+  }
+}
+
 // The reference-stiffness and corotational grains' dense factor: a Cholesky factor computed in
 // double precision and kept in single precision. Its solve is the sparse double-precision one
 // to single-precision round-off (the factor read in float, the vector turned to float and
