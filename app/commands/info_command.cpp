@@ -3,8 +3,6 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
-#include <sstream>
-#include <string>
 
 #include "command_registry.h"
 #include "model/force_kernel.h"
@@ -22,12 +20,6 @@ bool has_damped_body(const Model& model) {
   return false;
 }
 
-std::string format_mib(double bytes) {
-  std::ostringstream s;
-  s << std::setprecision(3) << bytes / 1048576.0;
-  return s.str();
-}
-
 // The integrators compared on the model's initial state; the model is left as it was.
 // `imex`: the scenario's imex settings, measured whichever integrator is `configured`.
 void print_integrators(Model& model, ContactSystem* contacts, const ScenarioDef& scenario,
@@ -37,8 +29,6 @@ void print_integrators(Model& model, ContactSystem* contacts, const ScenarioDef&
   for (const IntegratorCost& c : compare_integrators(model, contacts, scenario.time_step_safety,
                                                      contact_stiffness, imex, 10)) {
     const bool is_configured = c.integrator.implicit_viscosity == configured.implicit_viscosity;
-    const std::string matrices =
-        c.matrix_bytes > 0.0 ? ", " + format_mib(c.matrix_bytes) + " MiB of factors" : "";
     const double steps_per_unit = 1.0 / c.stable.dt;
     std::cout << "    " << std::left << std::setw(9) << c.integrator.name() << std::right << " dt "
               << std::setprecision(3) << c.stable.dt << " ("
@@ -46,8 +36,9 @@ void print_integrators(Model& model, ContactSystem* contacts, const ScenarioDef&
               << 1e3 * c.seconds_per_step << " ms/step, " << c.seconds_per_step * steps_per_unit
               << " s per time unit, "
               << c.seconds_per_step * steps_per_unit * scenario.duration / 3600.0 << " h for "
-              << scenario.duration << " time units" << matrices << (is_configured ? "  <- run" : "")
-              << "\n";
+              << scenario.duration << " time units";
+    if (c.matrix_bytes > 0.0) std::cout << ", " << c.matrix_bytes / 1048576.0 << " MiB of factors";
+    std::cout << (is_configured ? "  <- run" : "") << "\n";
   }
 }
 

@@ -279,6 +279,7 @@ bool BroadPhase::needs_rebuild(const BroadPhaseInput& input) const {
       input.segment_start.size() != built_segment_start_.size() ||
       input.segment_end.size() != built_segment_end_.size())
     return true;
+  if (built_nodes_.empty() && built_segment_start_.empty()) return false;
   // The box of the nearest-image displacements (header): rebuild when half its diagonal
   // exceeds skin / 2, that is when its squared diagonal exceeds skin^2.
   const double period = params_.x_max - params_.x_min;
@@ -300,7 +301,6 @@ bool BroadPhase::needs_rebuild(const BroadPhaseInput& input) const {
     include(input.segment_start[i], built_segment_start_[i]);
     include(input.segment_end[i], built_segment_end_[i]);
   }
-  if (built_nodes_.empty() && built_segment_start_.empty()) return false;
   // (A NaN displacement is caught before: the contact system checks the positions.)
   return (hi - lo).squaredNorm() > params_.skin * params_.skin;
 }

@@ -68,17 +68,16 @@ std::vector<double> run_settings(const ScenarioDef& s, const IntegratorChoice& i
     v.insert(v.end(), {1.0, s.imex_tolerance, s.imex_refactor_threshold});
     if (!s.imex_dense_factors) v.push_back(-1.0);  // (only when off: earlier checkpoints stay)
     // (Only when it matters, a material damped by that model: a checkpoint of the exact solve,
-    // the only one before the split, does not resume under the split one; nor one of the
-    // reference-stiffness and corotational grains' sparse factors under their single-precision
-    // ones.)
+    // the only one before the split, does not resume under the split one; nor one of sparse or
+    // full-matrix factors under the packed single-precision ones of the solves done once per
+    // step, reference_stiffness, corotational and the split. -3, which marked the full-matrix
+    // ones, is retired.)
     const auto damped = [&](bool objective) {
       return std::any_of(s.materials.begin(), s.materials.end(), [&](const MaterialDef& m) {
         return m.damping > 0.0 && (m.damping_model == DampingModel::objective) == objective;
       });
     };
     if (s.imex_objective_split && damped(true)) v.push_back(-2.0);
-    if (s.imex_dense_factors && damped(false)) v.push_back(-3.0);
-    // (Nor one of the full-matrix single-precision factors under the packed ones.)
     if (s.imex_dense_factors && (damped(false) || (s.imex_objective_split && damped(true))))
       v.push_back(-4.0);
   }

@@ -110,14 +110,28 @@ bool sorted(std::span<const ContactCandidate> list) {
 // cutoff (brute force over all pairs of different bodies and all images) must be listed.
 // The grains cross the seam many times; the test also counts what it exercised, so that a
 // scene without contacts or rebuilds cannot pass silently.
+// The moving scenes' steps: max speed ~1.1 (+ spin x radius ~0.5), ~0.006 per step.
+constexpr int kSceneSteps = 300;
+constexpr double kSceneDt = 0.004;
+
+// The periodic cell of the moving scenes.
+BroadPhaseParams periodic_scene_params() {
+  BroadPhaseParams params;
+  params.cutoff = 0.05;
+  params.skin = 0.06;
+  params.periodic_x = true;
+  params.x_min = -2.0;
+  params.x_max = 3.0;
+  return params;
+}
+
 // `builds`: where to leave the number of builds (ASSERT_* needs a void function).
 void run_no_missed_contact(const BroadPhaseParams& params, std::uint32_t seed,
                            const Vec2& drift = Vec2(0.0, 0.0), int* builds = nullptr) {
   MovingScene scene(params, 36, seed, drift);
   BroadPhase broad(params);
-  const double dt = 0.004;  // max speed ~1.1 (+ spin x radius ~0.5): ~0.006 per step
   int checked_pairs = 0, seam_pairs = 0;
-  for (int step = 0; step < 300; ++step) {
+  for (int step = 0; step < kSceneSteps; ++step) {
     if (broad.needs_rebuild(scene.input())) broad.build(scene.input());
     const auto list = broad.candidates();
     ASSERT_TRUE(sorted(list));
@@ -142,11 +156,11 @@ void run_no_missed_contact(const BroadPhaseParams& params, std::uint32_t seed,
             d, 1e-12);
       }
     }
-    scene.advance(dt);
+    scene.advance(kSceneDt);
   }
   EXPECT_GT(checked_pairs, 1000);
-  EXPECT_GT(broad.build_count(), 10);   // the skin was used up many times ...
-  EXPECT_LT(broad.build_count(), 300);  // ... but not at every step
+  EXPECT_GT(broad.build_count(), 10);           // the skin was used up many times ...
+  EXPECT_LT(broad.build_count(), kSceneSteps);  // ... but not at every step
   if (params.periodic_x) {
     EXPECT_GT(seam_pairs, 10);
   }
@@ -154,14 +168,8 @@ void run_no_missed_contact(const BroadPhaseParams& params, std::uint32_t seed,
 }
 
 TEST(BroadPhase, NoMissedPairVersusBruteForcePeriodic) {
-  BroadPhaseParams params;
-  params.cutoff = 0.05;
-  params.skin = 0.06;
-  params.periodic_x = true;
-  params.x_min = -2.0;
-  params.x_max = 3.0;
-  run_no_missed_contact(params, 7);
-  run_no_missed_contact(params, 1234);
+  run_no_missed_contact(periodic_scene_params(), 7);
+  run_no_missed_contact(periodic_scene_params(), 1234);
 }
 
 TEST(BroadPhase, NoMissedPairVersusBruteForceNotPeriodic) {
@@ -180,17 +188,12 @@ TEST(BroadPhase, NoMissedPairVersusBruteForceNotPeriodic) {
 // at least each time the drift alone has carried everything by half the skin: every 2.4
 // steps, 125 times in 300 steps.)
 TEST(BroadPhase, ACommonTranslationNeitherMissesPairsNorCostsRebuilds) {
-  BroadPhaseParams params;
-  params.cutoff = 0.05;
-  params.skin = 0.06;
-  params.periodic_x = true;
-  params.x_min = -2.0;
-  params.x_max = 3.0;
+  const BroadPhaseParams params = periodic_scene_params();
   int drifting = 0;
   run_no_missed_contact(params, 7, Vec2(3.0, -1.0), &drifting);
   MovingScene scene(params, 36, 7);
   BroadPhase broad(params);
-  for (int step = 0; step < 300; ++step, scene.advance(0.004))
+  for (int step = 0; step < kSceneSteps; ++step, scene.advance(kSceneDt))
     if (broad.needs_rebuild(scene.input())) broad.build(scene.input());
   const int still = broad.build_count();
   std::printf("builds in 300 steps: %d without the drift, %d with it\n", still, drifting);
