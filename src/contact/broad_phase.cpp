@@ -4,7 +4,10 @@
 #include <cmath>
 #include <limits>
 
+#include <omp.h>
+
 #include "core/error.h"
+#include "core/rounding.h"
 #include "geometry/polygon.h"
 
 namespace sg {
@@ -26,7 +29,7 @@ double nearest_image_shift(const BroadPhaseParams& params, const Vec2& node, con
                            const Vec2& b) {
   if (!params.periodic_x) return 0.0;
   const double period = params.x_max - params.x_min;
-  return period * std::round((0.5 * (a.x() + b.x()) - node.x()) / period);
+  return period * round_half_away((0.5 * (a.x() + b.x()) - node.x()) / period);
 }
 
 BroadPhase::BroadPhase(const BroadPhaseParams& params) : params_(params) {
@@ -184,12 +187,24 @@ void bin_segments(const BroadPhaseInput& input, const Grid& grid, std::vector<in
   }
 }
 
+// A segment's distance to `node` exceeds `accept` for sure: the node is farther than that from
+// the segment's box in x or in y. The margin of 1e-9 (relative) is far above the round-off of
+// the distance computed by project_on_segment: a pair it rejects is never one the distance
+// test accepts, so the candidates are those of the distance test alone.
+inline bool outside_box(const Vec2& node, const Vec2& a, const Vec2& b, double accept) {
+  const double margin = accept * (1.0 + 1e-9);
+  return node.x() < std::min(a.x(), b.x()) - margin || node.x() > std::max(a.x(), b.x()) + margin ||
+         node.y() < std::min(a.y(), b.y()) - margin || node.y() > std::max(a.y(), b.y()) + margin;
+}
+
 // Every segment of another body in the 3 x 3 block of cells around node n (distinct columns
 // only: with fewer than 3 columns a periodic block wraps onto itself), within `accept` of the
-// node: appended to the candidates in increasing segment order.
+// node: appended to the candidates in increasing segment order. A segment spanning several
+// cells of the block is tested once: `seen` (one entry per segment, this thread's) holds
+// `stamp`, unique to this node and build, for the segments already met.
 void query_node(const BroadPhaseParams& params, const BroadPhaseInput& input, const Grid& grid,
                 const std::vector<int>& cell_start, const std::vector<int>& cell_segments,
-                std::size_t n, double accept, std::vector<int>& scratch,
+                std::size_t n, double accept, std::uint64_t stamp, std::uint64_t* seen,
                 std::vector<ContactCandidate>& candidates) {
   const Vec2& node = input.nodes[n];
   const long long c_node = grid.column(node.x());
@@ -203,28 +218,30 @@ void query_node(const BroadPhaseParams& params, const BroadPhaseInput& input, co
     if (std::find(columns, columns + column_count, column) == columns + column_count)
       columns[column_count++] = column;
   }
-  scratch.clear();
+  const std::size_t first = candidates.size();
   for (int k = 0; k < column_count; ++k) {
     for (int r = std::max(0, r_node - 1); r <= std::min(grid.ny - 1, r_node + 1); ++r) {
       const std::size_t c = static_cast<std::size_t>(grid.cell(columns[k], r));
       for (int i = cell_start[c]; i < cell_start[c + 1]; ++i) {
         const int s = cell_segments[static_cast<std::size_t>(i)];
-        if (input.segment_body[static_cast<std::size_t>(s)] != input.node_body[n])
-          scratch.push_back(s);
+        const auto segment = static_cast<std::size_t>(s);
+        if (seen[segment] == stamp || input.segment_body[segment] == input.node_body[n]) continue;
+        seen[segment] = stamp;
+        const Vec2& a = input.segment_start[segment];
+        const Vec2& b = input.segment_end[segment];
+        // The only image that can be within reach is the nearest one of the segment's centre
+        // (period > 2 reach + widest segment, checked in build).
+        const double shift = nearest_image_shift(params, node, a, b);
+        const Vec2 image = node + Vec2(shift, 0.0);
+        if (outside_box(image, a, b, accept)) continue;
+        if (project_on_segment(image, a, b).distance <= accept)
+          candidates.push_back({static_cast<int>(n), s, shift});
       }
     }
   }
-  std::sort(scratch.begin(), scratch.end());
-  scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
-  for (const int s : scratch) {
-    const Vec2& a = input.segment_start[static_cast<std::size_t>(s)];
-    const Vec2& b = input.segment_end[static_cast<std::size_t>(s)];
-    // The only image that can be within reach is the nearest one of the segment's centre
-    // (period > 2 reach + widest segment, checked in build).
-    const double shift = nearest_image_shift(params, node, a, b);
-    const double distance = project_on_segment(node + Vec2(shift, 0.0), a, b).distance;
-    if (distance <= accept) candidates.push_back({static_cast<int>(n), s, shift});
-  }
+  // In increasing segment order (the cells list theirs in that order, the block does not).
+  std::sort(candidates.begin() + static_cast<std::ptrdiff_t>(first), candidates.end(),
+            [](const ContactCandidate& x, const ContactCandidate& y) { return x.segment < y.segment; });
 }
 
 }  // namespace
@@ -260,14 +277,19 @@ void BroadPhase::build(const BroadPhaseInput& input) {
   // joined in range order: the list is that of a query in node order, on any number of threads.
   // (Serial, the queries were a whole contact phase that did not speed up on 2 threads.)
   chunk_candidates_.resize(kQueryChunks);
-  chunk_scratch_.resize(kQueryChunks);
+  thread_seen_.resize(static_cast<std::size_t>(omp_get_max_threads()));
+  for (std::vector<std::uint64_t>& seen : thread_seen_)
+    seen.resize(segment_count, 0);  // stale stamps are below this build's
+  const std::uint64_t stamp_base = next_stamp_;
+  next_stamp_ += node_count;
   const auto chunk_begin = [&](std::size_t c) { return c * node_count / kQueryChunks; };
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t c = 0; c < kQueryChunks; ++c) {
     chunk_candidates_[c].clear();
+    std::uint64_t* seen = thread_seen_[static_cast<std::size_t>(omp_get_thread_num())].data();
     for (std::size_t n = chunk_begin(c); n < chunk_begin(c + 1); ++n)
-      query_node(params_, input, grid, cell_start_, cell_segments_, n, accept, chunk_scratch_[c],
-                 chunk_candidates_[c]);
+      query_node(params_, input, grid, cell_start_, cell_segments_, n, accept, stamp_base + n,
+                 seen, chunk_candidates_[c]);
   }
   for (const std::vector<ContactCandidate>& chunk : chunk_candidates_)
     candidates_.insert(candidates_.end(), chunk.begin(), chunk.end());
@@ -291,7 +313,7 @@ bool BroadPhase::needs_rebuild(const BroadPhaseInput& input) const {
     // over half a period can be a wrap: the test skips the division and rounding otherwise,
     // and at exactly half a period either image is as far.)
     if (params_.periodic_x && std::abs(d.x()) > 0.5 * period)
-      d.x() -= period * std::round(d.x() / period);
+      d.x() -= period * round_half_away(d.x() / period);
     lo = lo.cwiseMin(d);
     hi = hi.cwiseMax(d);
   };

@@ -37,6 +37,7 @@
 // list is only valid together with the positions it was built from (the skin criterion), and
 // the cell grid is scratch rebuilt with it; the class keeps the two together. Its state is the
 // plain struct BroadPhaseState (capture / restore).
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -119,11 +120,13 @@ class BroadPhase {
   // Cell grid, rebuilt with the list: segments of cell c are cell_segments_[cell_start_[c]
   // .. cell_start_[c+1]) in increasing index order (cell_fill_: scratch of the binning).
   std::vector<int> cell_start_, cell_segments_, cell_fill_;
-  // The node queries of build(), in kQueryChunks ranges of nodes: each range's candidates,
-  // and its scratch (the candidate segments of one node).
+  // The node queries of build(), in kQueryChunks ranges of nodes: each range's candidates.
   static constexpr std::size_t kQueryChunks = 64;
   std::vector<std::vector<ContactCandidate>> chunk_candidates_;
-  std::vector<std::vector<int>> chunk_scratch_;
+  // Per thread, per segment: the stamp of the last node query that met the segment. Stamps
+  // only grow (never captured nor restored), so a stale entry never matches a new query.
+  std::vector<std::vector<std::uint64_t>> thread_seen_;
+  std::uint64_t next_stamp_ = 1;
 };
 
 }  // namespace sg

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/parallel.h"
+#include "core/rounding.h"
 #include "model/kinematics.h"
 
 namespace sg {
@@ -259,14 +260,14 @@ double ContactSystem::slip_increment(const Model& model, int slave, const Body& 
   // is taken modulo the period.
   if (model.periodic_x) {
     const double dx = (node.x() - node_old.x());
-    node_old.x() += period * std::round(dx / period);
+    node_old.x() += period * round_half_away(dx / period);
   }
   // The master may have wrapped across the seam too: bring its old segment next to the new one.
   Vec2 old_start = old_view.segment_start(proj.segment),
        old_end = old_view.segment_end(proj.segment);
   if (model.periodic_x) {
     const double wrap =
-        period * std::round((view.segment_start(proj.segment).x() - old_start.x()) / period);
+        period * round_half_away((view.segment_start(proj.segment).x() - old_start.x()) / period);
     old_start.x() += wrap;
     old_end.x() += wrap;
   }
@@ -348,7 +349,7 @@ void ContactSystem::add_force_at_point(Model& model, int point, const Vec2& f, c
   Vec2 arm = at - Vec2(model.rigid.x[r], model.rigid.y[r]);
   if (model.periodic_x) {
     const double period = model.x_max - model.x_min;
-    arm.x() -= period * std::round(arm.x() / period);
+    arm.x() -= period * round_half_away(arm.x() / period);
   }
   model.rigid.torque[r] += cross(arm, f);
 }
