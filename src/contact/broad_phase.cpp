@@ -7,6 +7,7 @@
 #include <omp.h>
 
 #include "core/error.h"
+#include "core/parallel.h"
 #include "core/rounding.h"
 #include "geometry/polygon.h"
 
@@ -295,6 +296,18 @@ void BroadPhase::build(const BroadPhaseInput& input) {
     candidates_.insert(candidates_.end(), chunk.begin(), chunk.end());
 }
 
+namespace {
+
+// The box [lo, hi] widened to hold d.
+inline void widen_box(const Vec2& d, double& lo_x, double& lo_y, double& hi_x, double& hi_y) {
+  lo_x = std::min(lo_x, d.x());
+  lo_y = std::min(lo_y, d.y());
+  hi_x = std::max(hi_x, d.x());
+  hi_y = std::max(hi_y, d.y());
+}
+
+}  // namespace
+
 bool BroadPhase::needs_rebuild(const BroadPhaseInput& input) const {
   if (build_count_ == 0) return true;
   if (input.nodes.size() != built_nodes_.size() ||
@@ -303,28 +316,46 @@ bool BroadPhase::needs_rebuild(const BroadPhaseInput& input) const {
     return true;
   if (built_nodes_.empty() && built_segment_start_.empty()) return false;
   // The box of the nearest-image displacements (header): rebuild when half its diagonal
-  // exceeds skin / 2, that is when its squared diagonal exceeds skin^2.
+  // exceeds skin / 2, that is when its squared diagonal exceeds skin^2. Minima and maxima are
+  // exact whatever their order: the same box on any number of threads.
   const double period = params_.x_max - params_.x_min;
+  const bool periodic = params_.periodic_x;
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
-  Vec2 lo(kInfinity, kInfinity), hi(-kInfinity, -kInfinity);
-  const auto include = [&](const Vec2& now, const Vec2& then) {
-    Vec2 d = now - then;
-    // Nearest image: a position wrapped across the seam has not moved by L. (Only a move of
-    // over half a period can be a wrap: the test skips the division and rounding otherwise,
-    // and at exactly half a period either image is as far.)
-    if (params_.periodic_x && std::abs(d.x()) > 0.5 * period)
-      d.x() -= period * round_half_away(d.x() / period);
-    lo = lo.cwiseMin(d);
-    hi = hi.cwiseMax(d);
+  double lo_x = kInfinity, lo_y = kInfinity, hi_x = -kInfinity, hi_y = -kInfinity;
+  // Nearest image: a position wrapped across the seam has not moved by L. (Only a move of
+  // over half a period can be a wrap: the test skips the division and rounding otherwise,
+  // and at exactly half a period either image is as far.)
+  const auto dx_of = [periodic, period](double now, double then) {
+    const double dx = now - then;
+    return periodic && std::abs(dx) > 0.5 * period ? dx - period * round_half_away(dx / period)
+                                                   : dx;
   };
-  for (std::size_t i = 0; i < built_nodes_.size(); ++i)
-    include(input.nodes[i], built_nodes_[i]);
-  for (std::size_t i = 0; i < built_segment_start_.size(); ++i) {
-    include(input.segment_start[i], built_segment_start_[i]);
-    include(input.segment_end[i], built_segment_end_[i]);
+  const auto displacement = [&](const Vec2& now, const Vec2& then) {
+    return Vec2(dx_of(now.x(), then.x()), now.y() - then.y());
+  };
+  const auto nodes = static_cast<std::ptrdiff_t>(built_nodes_.size());
+  const auto segments = static_cast<std::ptrdiff_t>(built_segment_start_.size());
+  const bool parallel = static_cast<std::size_t>(nodes + segments) >= kParallelContourPoints;
+  // (The loops name the reduction variables themselves: a lambda capturing them by reference
+  // would widen the shared box, not each thread's.)
+#pragma omp parallel if (parallel) reduction(min : lo_x, lo_y) reduction(max : hi_x, hi_y)
+  {
+#pragma omp for schedule(static) nowait
+    for (std::ptrdiff_t i = 0; i < nodes; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      widen_box(displacement(input.nodes[k], built_nodes_[k]), lo_x, lo_y, hi_x, hi_y);
+    }
+#pragma omp for schedule(static) nowait
+    for (std::ptrdiff_t i = 0; i < segments; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      widen_box(displacement(input.segment_start[k], built_segment_start_[k]), lo_x, lo_y, hi_x,
+                hi_y);
+      widen_box(displacement(input.segment_end[k], built_segment_end_[k]), lo_x, lo_y, hi_x, hi_y);
+    }
   }
+  const Vec2 diagonal(hi_x - lo_x, hi_y - lo_y);
   // (A NaN displacement is caught before: the contact system checks the positions.)
-  return (hi - lo).squaredNorm() > params_.skin * params_.skin;
+  return diagonal.squaredNorm() > params_.skin * params_.skin;
 }
 
 void BroadPhase::capture(BroadPhaseState& state) const {
