@@ -22,8 +22,8 @@
 
 #include "../tests/scenes/shear_cell_scenario.h"
 #include "scenario/scenario.h"
+#include "solver/envelope_cholesky_factor.h"
 #include "solver/implicit_viscosity.h"
-#include "solver/packed_cholesky_factor.h"
 #include "solver/state_snapshot.h"
 #include "solver/step_controller.h"
 #include "solver/stepper.h"
@@ -202,40 +202,49 @@ BENCHMARK(ViscousFactor)
     ->Unit(benchmark::kMicrosecond)
     ->UseRealTime();
 
-// The single-precision dense factor's solve (solver/packed_cholesky_factor.h): the grains' A0
-// of the cell (as ViscousFactor), factored in double precision, kept in single precision
-// either as a full n x n matrix (storage 0, Eigen's triangular solves of its lower triangle)
-// or packed column by column (1), solved grain after grain for one right-hand side. `copies`
-// copies of the 60 factors: 1 (60 grains, 2.6 MB of lower triangles: they stay in cache) or 7
-// (420 grains, 18 MB, about the 400-grain cell's: they come from memory at each pass).
-// Reports microseconds per grain.
-//   build/bench/bench_softgrain --benchmark_filter=PackedCholeskySolve
-void PackedCholeskySolve(benchmark::State& state) {
-  const bool packed = state.range(0) != 0;
+// The single-precision factor's solve (solver/envelope_cholesky_factor.h): the grains' A0 of
+// the cell (as ViscousFactor), factored in double precision, kept in single precision either
+// as a full n x n matrix (storage 0, Eigen's triangular solves of its lower triangle), by rows
+// over the whole lower triangle (1: the envelope without an ordering, the packed triangle of
+// 838f8d0 read by rows) or over the envelope in the reverse Cuthill-McKee ordering (2, what the
+// solver keeps), solved grain after grain for one right-hand side. `copies` copies of the 60
+// factors: 1 (60 grains, 2.6 MB of lower triangles: they stay in cache) or 7 (420 grains,
+// 18 MB, about the 400-grain cell's: they come from memory at each pass). Reports
+// microseconds per grain and the factors' bytes per grain.
+//   build/bench/bench_softgrain --benchmark_filter=SinglePrecisionCholeskySolve
+void SinglePrecisionCholeskySolve(benchmark::State& state) {
+  const auto storage = static_cast<int>(state.range(0));
   const auto copies = static_cast<int>(state.range(1));
   const ScenarioDef s = imex_cell(0.02, DampingModel::reference_stiffness, true);
   const Model model = build_model(s);
   std::vector<Eigen::MatrixXf> full;
-  std::vector<PackedCholeskyFactor> factors;
+  std::vector<EnvelopeCholeskyFactor> factors;
+  double bytes = 0.0;
   for (int copy = 0; copy < copies; ++copy)
     for (BodyId b = 0; b < static_cast<BodyId>(model.bodies.size()); ++b) {
       if (!has_implicit_viscosity(model, b)) continue;
-      Eigen::MatrixXd a = (0.5 * 3.2e-3) * Eigen::MatrixXd(assemble_damping_stiffness(model, b));
+      const Eigen::SparseMatrix<double> k0 = assemble_damping_stiffness(model, b);
+      Eigen::MatrixXd a = (0.5 * 3.2e-3) * Eigen::MatrixXd(k0);
       const Body& body = model.body(b);
       for (int i = 0; i < 2 * body.node_count(); ++i)
         a(i, i) += model.nodes.mass[static_cast<std::size_t>(body.node_begin + i / 2)];
-      Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> cholesky(a);
-      if (packed)
-        factors.emplace_back().assign(a);
-      else
+      if (storage == 0) {
+        Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> cholesky(a);
         full.push_back(a.cast<float>());
+        bytes += static_cast<double>(a.size()) * sizeof(float);
+        continue;
+      }
+      EnvelopeCholeskyFactor& factor = factors.emplace_back();
+      if (storage == 2) factor.order(k0);
+      if (!factor.factor(a)) state.SkipWithError("a factorization failed");
+      bytes += static_cast<double>(factor.bytes());
     }
-  const std::size_t grains = packed ? factors.size() : full.size();
+  const std::size_t grains = storage == 0 ? full.size() : factors.size();
   std::vector<Eigen::VectorXf> x(grains);
   const auto wall_start = std::chrono::steady_clock::now();
   for (auto _ : state) {
     for (std::size_t k = 0; k < grains; ++k) {
-      if (packed) {
+      if (storage != 0) {
         x[k].setOnes(factors[k].size());
         factors[k].solve_in_place(x[k]);
       } else {
@@ -250,13 +259,14 @@ void PackedCholeskySolve(benchmark::State& state) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   state.counters["us_per_grain"] =
       1e6 * wall / static_cast<double>(state.iterations()) / static_cast<double>(grains);
-  state.SetLabel(std::string(packed ? "packed" : "full matrix") + ", " + std::to_string(grains) +
-                 " grains");
+  state.counters["kB_per_grain"] = 1e-3 * bytes / static_cast<double>(grains);
+  const char* names[] = {"full matrix", "lower triangle by rows", "envelope, RCM ordering"};
+  state.SetLabel(std::string(names[storage]) + ", " + std::to_string(grains) + " grains");
 }
 
-BENCHMARK(PackedCholeskySolve)
-    ->ArgsProduct({{0, 1}, {1, 7}})
-    ->ArgNames({"packed", "copies"})
+BENCHMARK(SinglePrecisionCholeskySolve)
+    ->ArgsProduct({{0, 1, 2}, {1, 7}})
+    ->ArgNames({"storage", "copies"})
     ->Unit(benchmark::kMicrosecond)
     ->UseRealTime();
 

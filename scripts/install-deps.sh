@@ -25,7 +25,7 @@
 #                       reads both .vtu encodings (python/tests/test_vtu_formats.py)
 set -euo pipefail
 packages=(cmake g++ make ccache ninja-build libeigen3-dev libcgal-dev libxsimd-dev libtomlplusplus-dev
-          libcli11-dev libgtest-dev libbenchmark-dev libcairo2-dev nlohmann-json3-dev python3-matplotlib
+          libcli11-dev libboost-dev libgtest-dev libbenchmark-dev libcairo2-dev nlohmann-json3-dev python3-matplotlib
           python3-numpy python3-scipy ffmpeg pybind11-dev python3-dev python3-pytest slurm-wlm munge
           zlib1g-dev python3-vtk9)
 missing=()

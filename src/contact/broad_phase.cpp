@@ -241,8 +241,9 @@ void query_node(const BroadPhaseParams& params, const BroadPhaseInput& input, co
     }
   }
   // In increasing segment order (the cells list theirs in that order, the block does not).
-  std::sort(candidates.begin() + static_cast<std::ptrdiff_t>(first), candidates.end(),
-            [](const ContactCandidate& x, const ContactCandidate& y) { return x.segment < y.segment; });
+  std::sort(
+      candidates.begin() + static_cast<std::ptrdiff_t>(first), candidates.end(),
+      [](const ContactCandidate& x, const ContactCandidate& y) { return x.segment < y.segment; });
 }
 
 }  // namespace
@@ -289,8 +290,8 @@ void BroadPhase::build(const BroadPhaseInput& input) {
     chunk_candidates_[c].clear();
     std::uint64_t* seen = thread_seen_[static_cast<std::size_t>(omp_get_thread_num())].data();
     for (std::size_t n = chunk_begin(c); n < chunk_begin(c + 1); ++n)
-      query_node(params_, input, grid, cell_start_, cell_segments_, n, accept, stamp_base + n,
-                 seen, chunk_candidates_[c]);
+      query_node(params_, input, grid, cell_start_, cell_segments_, n, accept, stamp_base + n, seen,
+                 chunk_candidates_[c]);
   }
   for (const std::vector<ContactCandidate>& chunk : chunk_candidates_)
     candidates_.insert(candidates_.end(), chunk.begin(), chunk.end());

@@ -9,7 +9,7 @@ namespace sg {
 // std::round(x), bit for bit (halves away from zero, the sign of zero kept), for any x.
 inline double round_half_away(double x) {
   constexpr double kWhole = 4503599627370496.0;  // 2^52: from here on every double is whole
-  if (!(std::abs(x) < kWhole)) return x;          // (and NaN)
+  if (!(std::abs(x) < kWhole)) return x;         // (and NaN)
   const double t = static_cast<double>(static_cast<long long>(x));  // toward zero
   const double fraction = x - t;                                    // exact
   if (fraction >= 0.5) return t + 1.0;

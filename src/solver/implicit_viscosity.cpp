@@ -212,6 +212,7 @@ ImplicitViscosity::ImplicitViscosity(const Model& model, double tolerance,
     s.factor->analyzePattern(pattern);
     s.dense = prefers_dense_factor(s, pattern, dense_factor_limit);
     if (s.dense) s.factor.reset();
+    if (single_precision_factor(s)) s.single_factor.order(pattern);
     if (s.dense && s.model == DampingModel::objective) {
       // A dense body's objective operator is assembled dense (reassemble_objective_damping),
       // for the split solve only when it is factored: the sparse one is not kept. (The other
@@ -262,17 +263,15 @@ void ImplicitViscosity::factorize(const Model& model, BodySystem& s, double h) {
   thread_local Eigen::MatrixXd a;  // a dense body's M + h/2 C (scratch)
   if (single_precision_factor(s)) {
     // C dense, on and below the diagonal: the objective one assembled at the reference, alpha
-    // K0 from its sparse matrix. Factored in double precision in place (Cholesky: the
-    // operator is symmetric positive definite), kept in single precision (header).
+    // K0 from its sparse matrix. Factored in double precision (Cholesky: the operator is
+    // symmetric positive definite) in the body's ordering, kept in single precision (header).
     if (split)
       reassemble_objective_damping(model, s.body, s.reference_gradients, a, true);
     else
       a = s.damping;
     a *= scale;
     a.diagonal() += s.mass;
-    Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> cholesky(a);
-    factored = cholesky.info() == Eigen::Success;
-    s.single_factor.assign(a);
+    factored = s.single_factor.factor(a);
   } else if (s.dense) {
     a.noalias() = scale * s.dense_damping;
     a.diagonal() += s.mass;

@@ -65,9 +65,10 @@
 //     1e-7 relative. On bench/scenes/imex-cell.toml (60 grains, 2 threads) whole
 //     reference_stiffness and corotational runs 1.16 and 1.20 times faster, mu within 2.7e-4
 //     relative of the sparse factors (bench/results/debian12-2core/dense_factor_single_*.csv).
-//     The lower triangle is packed column after column (PackedCholeskyFactor: Eigen has no
-//     packed triangular storage), 0.4 GB for the 2,000 grains of
-//     examples/shear-cell-full.toml, whose sparse factors (0.5 GB) are released;
+//     The factor is stored by rows over its envelope in a reverse Cuthill-McKee ordering
+//     (EnvelopeCholeskyFactor: Eigen has neither envelope storage nor that ordering), one
+//     short stream of memory per solve; the sparse factors (0.5 GB for the 2,000 grains of
+//     examples/shear-cell-full.toml) are released;
 //   - the exact objective solve's preconditioner, from half full: Eigen::LDLT in double
 //     precision, which its conjugate gradients apply 2 to 4 times per step while it is in
 //     cache: 6.6 against 10.4 us per solve and 164 against 194 us per factorization
@@ -88,8 +89,8 @@
 #include <vector>
 
 #include "model/model.h"
+#include "solver/envelope_cholesky_factor.h"
 #include "solver/integrator_params.h"
-#include "solver/packed_cholesky_factor.h"
 
 namespace sg {
 
@@ -158,7 +159,7 @@ class ImplicitViscosity {
     // The dense bodies of the solves done once per step: the Cholesky factor L of M + h/2
     // alpha K0 or of M + h/2 (1 + beta) C(F_ref) (split) in its lower triangle, single
     // precision; `single`: a vector of that precision (scratch).
-    PackedCholeskyFactor single_factor;
+    EnvelopeCholeskyFactor single_factor;
     Eigen::VectorXf single;
     double factor_h = 0.0;
     std::vector<Mat2> gradients;            // objective model: F per Gauss point
