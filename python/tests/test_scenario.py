@@ -60,15 +60,16 @@ def test_info_is_what_softgrain_info_prints():
     assert explicit["stable_step"] == pytest.approx(info["stable_step"], rel=1e-12)
     assert imex["step_limit"] == "wave-speed-limited"
     # The IMEX integrator with the scenario's imex settings: the default split solve keeps one
-    # single-precision factor per grain (4 bytes per lower-triangle entry), the exact solve a
-    # double-precision operator and factor (2 x 8 bytes per entry of the full matrix): about
-    # 8 times the bytes.
+    # single-precision factor per grain (4 bytes per entry of its envelope, a part of the lower
+    # triangle), the exact solve a double-precision operator and factor (2 x 8 bytes per entry
+    # of the full matrix): 8 times the bytes if the envelope were the whole triangle, 16 if it
+    # were half of it.
     assert "factors_mib" not in explicit
     text = softgrain.Scenario.from_file(EXAMPLES / "shear-cell-small.toml").to_toml()
     exact = softgrain.Scenario.from_toml(
         text.replace("[time]", '[time]\nimex_objective = "exact"', 1),
         base_dir=EXAMPLES).info()["integrators"][1]
-    assert exact["factors_mib"] / imex["factors_mib"] == pytest.approx(8.0, rel=0.1)
+    assert 8.0 < exact["factors_mib"] / imex["factors_mib"] < 16.0
     for cost in (explicit, imex):
         assert cost["seconds_per_step"] > 0
         assert cost["seconds_per_time_unit"] == pytest.approx(
