@@ -49,8 +49,9 @@ bool EnvelopeCholeskyFactor::factor(const Eigen::MatrixXd& a) {
     Eigen::Index first = 0;
     while (first < i && l(i, first) == 0.0)
       ++first;
-    for (Eigen::Index j = first; j <= i; ++j)
+    for (Eigen::Index j = first; j < i; ++j)
       values_.push_back(static_cast<float>(l(i, j)));
+    values_.push_back(static_cast<float>(1.0 / l(i, i)));  // the solve multiplies by it
     row_start_[static_cast<std::size_t>(i) + 1] = values_.size();
   }
   return true;
@@ -64,25 +65,38 @@ void EnvelopeCholeskyFactor::solve_in_place(Eigen::VectorXf& x) const {
   for (Eigen::Index k = 0; k < n_; ++k)
     permuted_[k] = x[order_[static_cast<std::size_t>(k)]];
   float* y = permuted_.data();
-  // L y = P b: y_i = (b_i - sum_{f_i <= k < i} L_ik y_k) / L_ii.
+  // The solve is bound by its chains (each unknown waits for the previous one), not by the
+  // arithmetic: the latest unknown's term is kept apart from the vector operations, so that
+  // the chain from one row to the next is a multiply-add and a multiply (the reciprocal
+  // diagonal), not a horizontal sum or a division. 3.3 -> 2.9 us per 146-DOF grain
+  // (envelope_factor_solve.csv).
+  // L y = P b: y_i = (b_i - sum_{f_i <= k < i-1} L_ik y_k - L_i,i-1 y_i-1) / L_ii.
   for (Eigen::Index i = 0; i < n_; ++i) {
-    const float* row = values_.data() + row_start_[static_cast<std::size_t>(i)];
-    const auto below = static_cast<Eigen::Index>(row_start_[static_cast<std::size_t>(i) + 1] -
-                                                 row_start_[static_cast<std::size_t>(i)]) -
-                       1;
-    y[i] = (y[i] - Row(row, below).dot(Segment(y + i - below, below))) / row[below];
+    const EnvelopeRow r = row(i);
+    if (r.below == 0) {
+      y[i] *= r.inverse_diagonal;
+      continue;
+    }
+    const float rest = Row(r.entries, r.below - 1).dot(Segment(y + i - r.below, r.below - 1));
+    y[i] = ((y[i] - rest) - r.entries[r.below - 1] * y[i - 1]) * r.inverse_diagonal;
   }
-  // L^T z = y, last row first: z_i = y_i / L_ii, then y_k -= L_ik z_i for f_i <= k < i.
+  // L^T z = y, last row first: z_i = y_i / L_ii, then y_k -= L_ik z_i for f_i <= k < i (the
+  // next row's unknown first, as a scalar: a vector store read back as a scalar forwards late).
   for (Eigen::Index i = n_ - 1; i >= 0; --i) {
-    const float* row = values_.data() + row_start_[static_cast<std::size_t>(i)];
-    const auto below = static_cast<Eigen::Index>(row_start_[static_cast<std::size_t>(i) + 1] -
-                                                 row_start_[static_cast<std::size_t>(i)]) -
-                       1;
-    y[i] /= row[below];
-    Segment(y + i - below, below) -= y[i] * Row(row, below);
+    const EnvelopeRow r = row(i);
+    y[i] *= r.inverse_diagonal;
+    if (r.below == 0) continue;
+    y[i - 1] -= y[i] * r.entries[r.below - 1];
+    Segment(y + i - r.below, r.below - 1) -= y[i] * Row(r.entries, r.below - 1);
   }
   for (Eigen::Index k = 0; k < n_; ++k)
     x[order_[static_cast<std::size_t>(k)]] = y[k];
+}
+
+EnvelopeCholeskyFactor::EnvelopeRow EnvelopeCholeskyFactor::row(Eigen::Index i) const {
+  const std::size_t begin = row_start_[static_cast<std::size_t>(i)];
+  const std::size_t end = row_start_[static_cast<std::size_t>(i) + 1];
+  return {values_.data() + begin, static_cast<Eigen::Index>(end - begin) - 1, values_[end - 1]};
 }
 
 }  // namespace sg

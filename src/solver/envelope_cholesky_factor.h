@@ -1,7 +1,8 @@
 #pragma once
 // The lower Cholesky factor L of a symmetric positive definite matrix, P A P^T = L L^T, kept
-// in single precision and stored by rows over its envelope: row i holds L(i, f_i .. i), where
-// f_i is its first nonzero column, contiguous, and the next row follows it. The permutation P
+// in single precision and stored by rows over its envelope: row i holds L(i, f_i .. i - 1),
+// where f_i is its first nonzero column, then 1 / L(i, i), contiguous, and the next row
+// follows it. The permutation P
 // is a reverse Cuthill-McKee ordering of A's pattern (Boost.Graph), which gathers each row's
 // entries near the diagonal. Nothing outside the envelope is dropped: the entries of L before
 // the first nonzero of A's row are exact zeros (they are sums of products of zeros), so the
@@ -42,6 +43,13 @@ class EnvelopeCholeskyFactor {
   }
 
  private:
+  struct EnvelopeRow {
+    const float* entries;  // L(i, i - below .. i - 1)
+    Eigen::Index below;    // i - f_i
+    float inverse_diagonal;
+  };
+  EnvelopeRow row(Eigen::Index i) const;
+
   Eigen::Index n_ = 0;
   std::vector<int> order_;              // position k of the ordering holds original index order_[k]
   std::vector<float> values_;           // row i: L(i, i + 1 - length_i .. i)
