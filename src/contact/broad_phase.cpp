@@ -198,30 +198,36 @@ inline bool outside_box(const Vec2& node, const Vec2& a, const Vec2& b, double a
          node.y() < std::min(a.y(), b.y()) - margin || node.y() > std::max(a.y(), b.y()) + margin;
 }
 
-// Every segment of another body in the 3 x 3 block of cells around node n (distinct columns
-// only: with fewer than 3 columns a periodic block wraps onto itself), within `accept` of the
-// node: appended to the candidates in increasing segment order. A segment spanning several
-// cells of the block is tested once: `seen` (one entry per segment, this thread's) holds
+// Every segment of another body in the cells around node n (distinct columns only: with few
+// columns a periodic range wraps onto itself), within `accept` of the node: appended to the
+// candidates in increasing segment order. A segment spanning several of the cells is tested
+// once: `seen` (one entry per segment, this thread's) holds
 // `stamp`, unique to this node and build, for the segments already met.
 void query_node(const BroadPhaseParams& params, const BroadPhaseInput& input, const Grid& grid,
                 const std::vector<int>& cell_start, const std::vector<int>& cell_segments,
                 std::size_t n, double accept, std::uint64_t stamp, std::uint64_t* seen,
                 std::vector<ContactCandidate>& candidates) {
   const Vec2& node = input.nodes[n];
-  const long long c_node = grid.column(node.x());
-  const int r_node = grid.row(node.y());
-  int columns[3];
+  // The cells the node's reach square [x -+ m] x [y -+ m] overlaps: any segment within
+  // `accept` of the node has a point in that square, and so lies in one of them (its box's
+  // cells). The 1e-9 margin covers the round-off of the bounds and of the cell indices. Cells
+  // are at least `reach` wide: 2 or 3 columns and rows, where the 3 x 3 block around the
+  // node's cell was 9 cells.
+  const double m = accept * (1.0 + 1e-9);
+  const long long c_lo = grid.column(node.x() - m), c_hi = grid.column(node.x() + m);
+  SG_ASSERT(c_hi - c_lo < 4, "contact broad phase: cells narrower than the reach");
+  int columns[4];
   int column_count = 0;
-  for (long long dc = -1; dc <= 1; ++dc) {
-    const long long c = c_node + dc;
+  for (long long c = c_lo; c <= c_hi; ++c) {
     if (!grid.periodic && (c < 0 || c >= grid.nx)) continue;
     const int column = grid.wrap_column(c);
     if (std::find(columns, columns + column_count, column) == columns + column_count)
       columns[column_count++] = column;
   }
+  const int r_lo = grid.row(node.y() - m), r_hi = grid.row(node.y() + m);
   const std::size_t first = candidates.size();
   for (int k = 0; k < column_count; ++k) {
-    for (int r = std::max(0, r_node - 1); r <= std::min(grid.ny - 1, r_node + 1); ++r) {
+    for (int r = r_lo; r <= r_hi; ++r) {
       const std::size_t c = static_cast<std::size_t>(grid.cell(columns[k], r));
       for (int i = cell_start[c]; i < cell_start[c + 1]; ++i) {
         const int s = cell_segments[static_cast<std::size_t>(i)];
