@@ -201,8 +201,8 @@ inline bool outside_box(const Vec2& node, const Vec2& a, const Vec2& b, double a
 // Every segment of another body in the cells around node n (distinct columns only: with few
 // columns a periodic range wraps onto itself), within `accept` of the node: appended to the
 // candidates in increasing segment order. A segment spanning several of the cells is tested
-// once: `seen` (one entry per segment, this thread's) holds
-// `stamp`, unique to this node and build, for the segments already met.
+// once: `seen` (one entry per segment, this thread's) holds `stamp`, unique to this node and
+// build, for the segments already met.
 void query_node(const BroadPhaseParams& params, const BroadPhaseInput& input, const Grid& grid,
                 const std::vector<int>& cell_start, const std::vector<int>& cell_segments,
                 std::size_t n, double accept, std::uint64_t stamp, std::uint64_t* seen,
@@ -246,7 +246,7 @@ void query_node(const BroadPhaseParams& params, const BroadPhaseInput& input, co
       }
     }
   }
-  // In increasing segment order (the cells list theirs in that order, the block does not).
+  // In increasing segment order (the cells are visited column by column, not in that order).
   std::sort(
       candidates.begin() + static_cast<std::ptrdiff_t>(first), candidates.end(),
       [](const ContactCandidate& x, const ContactCandidate& y) { return x.segment < y.segment; });
