@@ -110,6 +110,19 @@ void advance_body_implicitly(const Model& model, NodeState& n, BodyId b, double 
   }
 }
 
+// u_n+1 = u_n + dt v_n+1/2 for the body's nodes; returns a probe that is NaN iff some updated
+// value is not finite (0 * inf = NaN).
+double advance_body_positions(NodeState& n, const Body& body, double dt) {
+  double finite_probe = 0.0;
+  for (int k = body.node_begin; k < body.node_end; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    n.ux[i] += dt * n.vx[i];
+    n.uy[i] += dt * n.vy[i];
+    finite_probe += 0.0 * (n.ux[i] + n.uy[i] + n.vx[i] + n.vy[i]);
+  }
+  return finite_probe;
+}
+
 }  // namespace
 
 Stepper::NodeUpdate Stepper::update_node_velocities(const StepSizes& steps) {
@@ -133,7 +146,12 @@ Stepper::NodeUpdate Stepper::update_node_velocities(const StepSizes& steps) {
 
   // Sums are kept per body and added in body order: the result does not depend on the number
   // of threads. Dynamic schedule: the implicit solves of the objective model cost from one
-  // to several operator applications per body, and a rebuilt preconditioner more.
+  // to several operator applications per body, and a rebuilt preconditioner more. Each body's
+  // positions are advanced right after its velocities, by the same thread while its nodes are
+  // in that core's cache (nothing in between reads them): as a phase of its own, serial on
+  // models under kParallelStreamingNodes, the update read them from the other core's cache
+  // and took 0.13 s of the 400-grain cell's 10 s on 2 threads against 0.075 s on 1.
+  body_probes_.assign(model_.bodies.size(), 0.0);
   const int body_count = static_cast<int>(model_.bodies.size());
 #pragma omp parallel for schedule(dynamic)
   for (int b = 0; b < body_count; ++b) {
@@ -146,6 +164,7 @@ Stepper::NodeUpdate Stepper::update_node_velocities(const StepSizes& steps) {
       advance_body_explicitly<false>(model_, n, body, h, drive_data, sums);
     else
       advance_body_explicitly<true>(model_, n, body, h, drive_data, sums);
+    body_probes_[static_cast<std::size_t>(b)] = advance_body_positions(n, body, steps.next);
     double* out = body_sums_.data() + kBodySums * static_cast<std::size_t>(b);
     out[0] = sums.kinetic;
     out[1] = sums.external_power;
@@ -209,26 +228,6 @@ ServoPower Stepper::advance_node_carriers(double h, double* drive_data) const {
     }
   }
   return power;
-}
-
-void Stepper::update_node_positions(double dt) {
-  NodeState& n = model_.nodes;
-  const int body_count = static_cast<int>(model_.bodies.size());
-  body_probes_.assign(model_.bodies.size(), 0.0);
-#pragma omp parallel for schedule(static) if (n.ux.size() >= kParallelStreamingNodes)
-  for (int b = 0; b < body_count; ++b) {
-    const Body& body = model_.body(b);
-    // A probe that becomes NaN iff some updated value is not finite (0 * inf = NaN).
-    double finite_probe = 0.0;
-    for (int k = body.node_begin; k < body.node_end; ++k) {
-      const auto i = static_cast<std::size_t>(k);
-      n.ux[i] += dt * n.vx[i];
-      n.uy[i] += dt * n.vy[i];
-      finite_probe += 0.0 * (n.ux[i] + n.uy[i] + n.vx[i] + n.vy[i]);
-    }
-    body_probes_[static_cast<std::size_t>(b)] = finite_probe;
-  }
-  if (model_.periodic_x) wrap_periodic_bodies();
 }
 
 void Stepper::finish_step(double dt) {

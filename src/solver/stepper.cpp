@@ -26,7 +26,9 @@ void Stepper::refresh_implicit_preconditioners() {
 }
 
 // One step, as the algorithm of the header reads: forces at u_n, then velocities, then
-// positions, then the ledger of the instant t_n. Each phase is timed into profile().
+// positions, then the ledger of the instant t_n. Each phase is timed into profile(); the field
+// nodes' positions advance with their velocities, body by body (node_update.cpp), so the
+// positions phase holds the periodic wrap.
 void Stepper::step(double dt) {
   PhaseTimer timer(profile_);
   const StepSizes steps = step_sizes(state_.previous_dt, dt);
@@ -36,11 +38,11 @@ void Stepper::step(double dt) {
   timer.stamp(StepPhase::contacts);
   const InternalForceResult internal = compute_internal_forces();
   timer.stamp(StepPhase::internal_forces);
-  const NodeUpdate nodes = update_node_velocities(steps);
+  const NodeUpdate nodes = update_node_velocities(steps);  // and the nodes' positions
   timer.stamp(StepPhase::velocities);
   const RigidUpdate rigid = advance_rigid_bodies(steps, nodes.carriers);
   timer.stamp(StepPhase::rigid_bodies);
-  update_node_positions(dt);
+  if (model_.periodic_x) wrap_periodic_bodies();
   timer.stamp(StepPhase::positions);
   book_energy(steps, contact, internal, nodes, rigid);
   finish_step(dt);

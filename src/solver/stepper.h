@@ -147,11 +147,11 @@ class Stepper {
   void apply_external_forces();
   ContactStepResult compute_contact_forces(const StepSizes& steps);
   InternalForceResult compute_internal_forces();
-  NodeUpdate update_node_velocities(const StepSizes& steps);  // solver/node_update.cpp
+  // v_n+1/2, then u_n+1 = u_n + dt_+ v_n+1/2, body by body (solver/node_update.cpp).
+  NodeUpdate update_node_velocities(const StepSizes& steps);
   // From the node carriers' servo power (summed on, so the sums keep their order).
   RigidUpdate advance_rigid_bodies(const StepSizes& steps,
                                    const ServoPower& carriers);  // solver/rigid_update.cpp
-  void update_node_positions(double dt);                         // solver/node_update.cpp
   // The ledger phase: what the phases measured, booked (solver/energy_ledger.h).
   void book_energy(const StepSizes& steps, const ContactStepResult& contact,
                    const InternalForceResult& internal, const NodeUpdate& nodes,
@@ -171,7 +171,7 @@ class Stepper {
   std::vector<double> body_sums_;
   // Scratch of update_node_velocities: IMEX velocity increments per node.
   std::vector<double> increment_x_, increment_y_;
-  // Scratch of update_node_positions: per-body finite probes.
+  // Scratch of update_node_velocities: per-body finite probes of the positions.
   std::vector<double> body_probes_;
 };
 
