@@ -3,9 +3,9 @@
 // in single precision and stored by rows over its envelope: row i holds L(i, f_i .. i - 1),
 // where f_i is its first nonzero column, then 1 / L(i, i), contiguous, and the next row
 // follows it. The permutation P is a reverse Cuthill-McKee ordering of A's pattern
-// (Boost.Graph), which gathers each row's entries near the diagonal. Nothing outside the envelope is dropped: the entries of L before
-// the first nonzero of A's row are exact zeros (they are sums of products of zeros), so the
-// solve is that of the dense factor, summed in another order.
+// (Boost.Graph), which gathers each row's entries near the diagonal. Nothing outside the envelope
+// is dropped: the entries of L before the first nonzero of A's row are exact zeros (they are sums
+// of products of zeros), so the solve is that of the dense factor, summed in another order.
 //
 // Why: the grains' triangular solves are bound by the bytes they read once the factors do not
 // stay in cache (every step, for each of the 2,000 grains of examples/shear-cell-full.toml).
