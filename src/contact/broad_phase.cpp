@@ -39,15 +39,6 @@ BroadPhase::BroadPhase(const BroadPhaseParams& params) : params_(params) {
 
 namespace {
 
-// floor(x) as an integer, exactly, for finite x within the range of long long: std::floor is
-// a call into libm in the baseline x86-64 build (no SSE4.1 rounding instruction), and the
-// binning and the queries take four per segment and two per node (the binning of the 400-grain
-// cell of bench/scenes/imex-cell-400.toml took 0.8 ms per rebuild with it).
-inline long long floor_index(double x) {
-  const auto truncated = static_cast<long long>(x);
-  return truncated - (static_cast<double>(truncated) > x ? 1 : 0);
-}
-
 // Geometry of the cell grid for one build. Cells are at least `reach` wide in both
 // directions, so everything within `reach` of a point lies in the 3 x 3 block of cells
 // around the point's cell.
