@@ -50,26 +50,24 @@ void apply_viscous_operator(const Model& model, BodyId body_id, const std::vecto
   force_kernel().viscous_operator(model, body, gradients.data(), rotation, x, y, out_x, out_y);
 }
 
-InternalForceResult add_internal_forces(Model& model, const std::vector<Mat2*>* gradients) {
-  const int body_count = static_cast<int>(model.bodies.size());
-  std::vector<BodyForceResult> per_body(model.bodies.size());
+BodyForceResult add_body_internal_forces(Model& model, BodyId body_id, Mat2* gradients) {
+  const Body& body = model.body(body_id);
+  if (body.kind != BodyKind::deformable) return {};
   NodeState& n = model.nodes;
-  force_kernel();  // chosen here, outside the threads: a bad SOFTGRAIN_SIMD throws to the caller
-#pragma omp parallel for schedule(dynamic, 8)
-  for (int b = 0; b < body_count; ++b) {
-    const Body& body = model.body(b);
-    if (body.kind != BodyKind::deformable) continue;
-    const auto o = static_cast<std::size_t>(body.node_begin);
-    per_body[static_cast<std::size_t>(b)] = add_body_internal_forces(
-        model, b, n.ux.data() + o, n.uy.data() + o, n.vx.data() + o, n.vy.data() + o,
-        n.fx.data() + o, n.fy.data() + o, true, n.viscous_fx.data() + o, n.viscous_fy.data() + o,
-        nullptr, gradients ? (*gradients)[static_cast<std::size_t>(b)] : nullptr);
-  }
+  const auto o = static_cast<std::size_t>(body.node_begin);
+  return add_body_internal_forces(model, body_id, n.ux.data() + o, n.uy.data() + o, n.vx.data() + o,
+                                  n.vy.data() + o, n.fx.data() + o, n.fy.data() + o, true,
+                                  n.viscous_fx.data() + o, n.viscous_fy.data() + o, nullptr,
+                                  gradients);
+}
+
+InternalForceResult sum_internal_forces(const Model& model,
+                                        const std::vector<BodyForceResult>& per_body) {
   InternalForceResult total;
-  for (int b = 0; b < body_count; ++b) {
-    const BodyForceResult& r = per_body[static_cast<std::size_t>(b)];
+  for (std::size_t b = 0; b < per_body.size(); ++b) {
+    const BodyForceResult& r = per_body[b];
     if (r.bad_gauss_point >= 0) {
-      const Body& body = model.body(b);
+      const Body& body = model.bodies[b];
       SG_THROW("body '" << body.name << "': invalid deformation at Gauss point "
                         << r.bad_gauss_point - body.gauss_begin << " (det F = " << r.bad_jacobian
                         << "): the body is inverted or the step exploded");
@@ -78,6 +76,17 @@ InternalForceResult add_internal_forces(Model& model, const std::vector<Mat2*>* 
     total.damping_power += r.damping_power;
   }
   return total;
+}
+
+InternalForceResult add_internal_forces(Model& model, const std::vector<Mat2*>* gradients) {
+  const int body_count = static_cast<int>(model.bodies.size());
+  std::vector<BodyForceResult> per_body(model.bodies.size());
+  force_kernel();  // chosen here, outside the threads: a bad SOFTGRAIN_SIMD throws to the caller
+#pragma omp parallel for schedule(dynamic, 8)
+  for (int b = 0; b < body_count; ++b)
+    per_body[static_cast<std::size_t>(b)] = add_body_internal_forces(
+        model, b, gradients ? (*gradients)[static_cast<std::size_t>(b)] : nullptr);
+  return sum_internal_forces(model, per_body);
 }
 
 }  // namespace sg

@@ -41,6 +41,16 @@ struct InternalForceResult {
   double damping_power = 0.0;
 };
 
+// The internal forces of one body of the model at its nodes' state (model.nodes: u, v in, f
+// and the viscous part added to; see above), with its deformation gradients written to
+// `gradients` if not null; nothing for a rigid body.
+BodyForceResult add_body_internal_forces(Model& model, BodyId body, Mat2* gradients = nullptr);
+
+// The bodies' results of add_body_internal_forces summed in body order; throws sg::Error
+// naming the body and the Gauss point of the first invalid deformation.
+InternalForceResult sum_internal_forces(const Model& model,
+                                        const std::vector<BodyForceResult>& per_body);
+
 // All deformable bodies, in parallel over bodies (each writes only its own node range,
 // and the energies are reduced in body order: results do not depend on the thread count).
 // Throws sg::Error naming the body and the Gauss point if a deformation is invalid.

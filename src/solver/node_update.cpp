@@ -1,6 +1,9 @@
-// The field nodes' phases of Stepper::step: the velocity update (free nodes, driven
-// nodes and load-driven carriers) and the position update. See stepper.h.
+// The field nodes' phases of Stepper::step, done body by body: the internal forces, the
+// velocity update (free nodes, driven nodes and load-driven carriers) and the position
+// update. See stepper.h.
+#include <chrono>
 #include <cmath>
+#include <exception>
 
 #include "core/error.h"
 #include "core/parallel.h"
@@ -125,7 +128,35 @@ double advance_body_positions(NodeState& n, const Body& body, double dt) {
 
 }  // namespace
 
-Stepper::NodeUpdate Stepper::update_node_velocities(const StepSizes& steps) {
+bool Stepper::waits_for_carrier(const Body& body) const {
+  if (body.node_drive < 0) return false;
+  const NodeDrive& nd = model_.node_drives[static_cast<std::size_t>(body.node_drive)];
+  return nd.mode[0] == DriveMode::load || nd.mode[1] == DriveMode::load;
+}
+
+void Stepper::advance_body(BodyId b, const StepSizes& steps, double* drive_data) {
+  const Body& body = model_.body(b);
+  NodeState& n = model_.nodes;
+  const double h = steps.velocity_interval;
+  BodySums sums;
+  if (implicit_ && has_implicit_viscosity(model_, b))
+    advance_body_implicitly(model_, n, b, h, *implicit_, increment_x_.data(), increment_y_.data(),
+                            sums);
+  else if (body.node_drive < 0)
+    advance_body_explicitly<false>(model_, n, body, h, drive_data, sums);
+  else
+    advance_body_explicitly<true>(model_, n, body, h, drive_data, sums);
+  body_probes_[static_cast<std::size_t>(b)] = advance_body_positions(n, body, steps.next);
+  double* out = body_sums_.data() + kBodySums * static_cast<std::size_t>(b);
+  out[0] = sums.kinetic;
+  out[1] = sums.external_power;
+  out[2] = sums.viscous_power;
+  out[3] = sums.force_power;
+  out[4] = sums.force_square;
+  out[5] = sums.damping_correction;
+}
+
+Stepper::FieldNodeUpdate Stepper::advance_field_nodes(const StepSizes& steps, PhaseTimer& timer) {
   const double h = steps.velocity_interval;
   NodeState& n = model_.nodes;
   const std::size_t drive_count = model_.node_drives.size();
@@ -141,52 +172,83 @@ Stepper::NodeUpdate Stepper::update_node_velocities(const StepSizes& steps) {
     increment_x_.resize(n.vx.size());
     increment_y_.resize(n.vy.size());
   }
-  NodeUpdate update;
-  update.carriers = advance_node_carriers(h, drive_data);
-
-  // Sums are kept per body and added in body order: the result does not depend on the number
-  // of threads. Dynamic schedule: the implicit solves of the objective model cost from one
-  // to several operator applications per body, and a rebuilt preconditioner more. Each body's
-  // positions are advanced right after its velocities, by the same thread while its nodes are
-  // in that core's cache (nothing in between reads them): as a phase of its own, serial on
-  // models under kParallelStreamingNodes, the update read them from the other core's cache
-  // and took 0.13 s of the 400-grain cell's 10 s on 2 threads against 0.075 s on 1.
+  body_forces_.assign(model_.bodies.size(), BodyForceResult{});
   body_probes_.assign(model_.bodies.size(), 0.0);
+  const std::vector<Mat2*>* gradients = implicit_ ? &implicit_->gradient_outputs() : nullptr;
+  force_kernel();  // chosen here, outside the threads: a bad SOFTGRAIN_SIMD throws to the caller
+
+  // Each body's internal forces, velocities and positions one after the other, by the same
+  // thread while its nodes are in that core's cache: nothing in between reads another body's
+  // nodes (a body's forces are its own nodes'; a velocity drive's imposed velocities are set
+  // above). Done as two phases, each with its own dynamic schedule, half the bodies changed
+  // core between them: on the 400-grain cell (corotational, 2 threads) the velocity update's
+  // stores of the nodes' forces and velocities waited for the other core's cache lines, and
+  // the velocity phase took 3.0-4.0 s against 4.55 s on 1 thread. A body whose node drive
+  // carries a load waits for the carriers (below), which sum the forces of all its nodes.
+  // Sums are kept per body and added in body order: the result does not depend on the
+  // number of threads. Dynamic schedule: the implicit solves of the objective model cost from
+  // one to several operator applications per body, and a rebuilt preconditioner more.
   const int body_count = static_cast<int>(model_.bodies.size());
-#pragma omp parallel for schedule(dynamic)
-  for (int b = 0; b < body_count; ++b) {
-    const Body& body = model_.body(b);
-    BodySums sums;
-    if (implicit_ && has_implicit_viscosity(model_, b))
-      advance_body_implicitly(model_, n, b, h, *implicit_, increment_x_.data(), increment_y_.data(),
-                              sums);
-    else if (body.node_drive < 0)
-      advance_body_explicitly<false>(model_, n, body, h, drive_data, sums);
-    else
-      advance_body_explicitly<true>(model_, n, body, h, drive_data, sums);
-    body_probes_[static_cast<std::size_t>(b)] = advance_body_positions(n, body, steps.next);
-    double* out = body_sums_.data() + kBodySums * static_cast<std::size_t>(b);
-    out[0] = sums.kinetic;
-    out[1] = sums.external_power;
-    out[2] = sums.viscous_power;
-    out[3] = sums.force_power;
-    out[4] = sums.force_square;
-    out[5] = sums.damping_correction;
+  std::exception_ptr first_error;
+  int first_error_body = body_count;
+  double force_seconds = 0.0, update_seconds = 0.0;
+#pragma omp parallel reduction(+ : force_seconds, update_seconds)
+  {
+    using clock = std::chrono::steady_clock;
+    clock::time_point last = clock::now();
+#pragma omp for schedule(dynamic)
+    for (int b = 0; b < body_count; ++b) {
+      const auto k = static_cast<std::size_t>(b);
+      try {
+        body_forces_[k] =
+            add_body_internal_forces(model_, b, gradients ? (*gradients)[k] : nullptr);
+        const clock::time_point forces_done = clock::now();
+        force_seconds += std::chrono::duration<double>(forces_done - last).count();
+        last = forces_done;
+        if (body_forces_[k].bad_gauss_point < 0 && !waits_for_carrier(model_.body(b)))
+          advance_body(b, steps, drive_data);
+      } catch (...) {
+#pragma omp critical(sg_field_node_error)
+        if (b < first_error_body) {
+          first_error_body = b;
+          first_error = std::current_exception();
+        }
+      }
+      const clock::time_point updated = clock::now();
+      update_seconds += std::chrono::duration<double>(updated - last).count();
+      last = updated;
+    }
   }
+  const double loop_seconds = force_seconds + update_seconds;
+  timer.stamp_split(StepPhase::internal_forces, StepPhase::velocities,
+                    loop_seconds > 0.0 ? force_seconds / loop_seconds : 1.0);
+
+  FieldNodeUpdate update;
+  try {  // an invalid deformation first, as when the forces were a phase of their own
+    update.internal = sum_internal_forces(model_, body_forces_);
+  } catch (const Error& e) {
+    SG_THROW(e.what() << " at step " << state_.step << ", time " << state_.time);
+  }
+  if (first_error) std::rethrow_exception(first_error);
+  update.nodes.carriers = advance_node_carriers(h, drive_data);
+  for (int b = 0; b < body_count; ++b)
+    if (waits_for_carrier(model_.body(b))) advance_body(b, steps, drive_data);
+
+  NodeUpdate& nodes = update.nodes;
   for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
     const double* sums = body_sums_.data() + kBodySums * b;
-    update.kinetic += sums[0];
-    update.external_power += sums[1];
-    update.viscous_power += sums[2];
-    update.force_power += sums[3];
-    update.force_square += sums[4];
-    if (implicit_) update.damping_correction -= sums[5];
+    nodes.kinetic += sums[0];
+    nodes.external_power += sums[1];
+    nodes.viscous_power += sums[2];
+    nodes.force_power += sums[3];
+    nodes.force_square += sums[4];
+    if (implicit_) nodes.damping_correction -= sums[5];
   }
   for (std::size_t d = 0; d < drive_count; ++d) {
     const double* sums = drive_data + kDriveSums * d;
     model_.node_drives[d].reaction = Vec2(sums[2], sums[3]);
-    update.drive_work_old += sums[4];
-    update.drive_work_new += sums[5];
+    nodes.drive_work_old += sums[4];
+    nodes.drive_work_new += sums[5];
   }
   return update;
 }

@@ -26,9 +26,10 @@ void Stepper::refresh_implicit_preconditioners() {
 }
 
 // One step, as the algorithm of the header reads: forces at u_n, then velocities, then
-// positions, then the ledger of the instant t_n. Each phase is timed into profile(); the field
-// nodes' positions advance with their velocities, body by body (node_update.cpp), so the
-// positions phase holds the periodic wrap.
+// positions, then the ledger of the instant t_n. Each phase is timed into profile(). The
+// contacts are all evaluated first; then each deformable body's internal forces, velocities
+// and positions are done together, body by body (node_update.cpp): they read and write that
+// body's nodes only. The positions phase holds the periodic wrap.
 void Stepper::step(double dt) {
   PhaseTimer timer(profile_);
   const StepSizes steps = step_sizes(state_.previous_dt, dt);
@@ -36,9 +37,10 @@ void Stepper::step(double dt) {
   timer.stamp(StepPhase::external_forces);
   const ContactStepResult contact = compute_contact_forces(steps);
   timer.stamp(StepPhase::contacts);
-  const InternalForceResult internal = compute_internal_forces();
-  timer.stamp(StepPhase::internal_forces);
-  const NodeUpdate nodes = update_node_velocities(steps);  // and the nodes' positions
+  // (Its loop stamps the internal forces and the velocities, the carriers the velocities.)
+  const FieldNodeUpdate field = advance_field_nodes(steps, timer);
+  const InternalForceResult& internal = field.internal;
+  const NodeUpdate& nodes = field.nodes;
   timer.stamp(StepPhase::velocities);
   const RigidUpdate rigid = advance_rigid_bodies(steps, nodes.carriers);
   timer.stamp(StepPhase::rigid_bodies);
@@ -82,15 +84,6 @@ ContactStepResult Stepper::compute_contact_forces(const StepSizes& steps) {
   const ContactEvaluation evaluation{steps.previous, state_.step == 0};
   try {
     return contacts_->add_contact_forces(model_, evaluation);
-  } catch (const Error& e) {
-    SG_THROW(e.what() << " at step " << state_.step << ", time " << state_.time);
-  }
-}
-
-InternalForceResult Stepper::compute_internal_forces() {
-  try {
-    // IMEX, objective damping: the force kernel leaves F where the velocity solve reads it.
-    return add_internal_forces(model_, implicit_ ? &implicit_->gradient_outputs() : nullptr);
   } catch (const Error& e) {
     SG_THROW(e.what() << " at step " << state_.step << ", time " << state_.time);
   }

@@ -143,12 +143,18 @@ class Stepper {
     ServoPower servo;
   };
 
+  struct FieldNodeUpdate {
+    InternalForceResult internal;
+    NodeUpdate nodes;
+  };
+
   // The phases of step(), in order (solver/stepper.cpp).
   void apply_external_forces();
   ContactStepResult compute_contact_forces(const StepSizes& steps);
-  InternalForceResult compute_internal_forces();
-  // v_n+1/2, then u_n+1 = u_n + dt_+ v_n+1/2, body by body (solver/node_update.cpp).
-  NodeUpdate update_node_velocities(const StepSizes& steps);
+  // The internal forces at u_n, v_n+1/2, then u_n+1 = u_n + dt_+ v_n+1/2, body by body
+  // (solver/node_update.cpp); the loop's time is booked to the internal forces and the
+  // velocities by `timer`.
+  FieldNodeUpdate advance_field_nodes(const StepSizes& steps, PhaseTimer& timer);
   // From the node carriers' servo power (summed on, so the sums keep their order).
   RigidUpdate advance_rigid_bodies(const StepSizes& steps,
                                    const ServoPower& carriers);  // solver/rigid_update.cpp
@@ -163,15 +169,22 @@ class Stepper {
   // to the drive's imposed-velocity slots of `drive_data` (6 per drive, node_update.cpp);
   // their servo power.
   ServoPower advance_node_carriers(double h, double* drive_data) const;
+  // Whether the body's nodes are driven by a load-driven carrier, whose velocity needs the
+  // forces of all its nodes first.
+  bool waits_for_carrier(const Body& body) const;
+  // The velocity and position update of one body's nodes, its sums into body_sums_.
+  void advance_body(BodyId b, const StepSizes& steps, double* drive_data);
   void wrap_periodic_bodies();
   void check_finite_velocities() const;
 
-  // Scratch of update_node_velocities: per-body partial sums, then per node drive its imposed
+  // Scratch of advance_field_nodes: per-body internal force results.
+  std::vector<BodyForceResult> body_forces_;
+  // Scratch of advance_field_nodes: per-body partial sums, then per node drive its imposed
   // velocities and partial sums.
   std::vector<double> body_sums_;
-  // Scratch of update_node_velocities: IMEX velocity increments per node.
+  // Scratch of advance_field_nodes: IMEX velocity increments per node.
   std::vector<double> increment_x_, increment_y_;
-  // Scratch of update_node_velocities: per-body finite probes of the positions.
+  // Scratch of advance_field_nodes: per-body finite probes of the positions.
   std::vector<double> body_probes_;
 };
 

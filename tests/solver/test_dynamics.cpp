@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <chrono>
 #include <cmath>
 #include <numbers>
 
@@ -233,6 +234,61 @@ TEST(Diagnosis, ExplodingStepNamesBodyNodeAndStep) {
     const std::string what = e.what();
     EXPECT_NE(what.find("body 'disc'"), std::string::npos) << what;
     EXPECT_NE(what.find("step"), std::string::npos) << what;
+  }
+}
+
+TEST(Diagnosis, InvertedGrainAmongOthersIsNamedOnAnyIntegratorAndThreadCount) {
+  // Each body's forces, velocities and positions are done together (node_update.cpp): an
+  // inverted body must still stop the step with its name and Gauss point, not with what its
+  // invalid forces do to the update of its nodes (an implicit solve on them), whatever the
+  // order in which the threads meet the bodies.
+  for (const IntegratorParams& integrator :
+       {IntegratorParams::explicit_integrator(), IntegratorParams::imex()})
+    for (int threads : {1, 2}) {
+      omp_set_num_threads(threads);
+      Model model;
+      const MaterialId m =
+          model.add_material(scenes::elastic_material(MaterialLaw::neo_hookean, 0.05));
+      for (int k = 0; k < 6; ++k)
+        scenes::add_disc(model, m, Vec2(1.2 * k, 0.0), 0.5, 0.1, "g" + std::to_string(k));
+      Mat2 inverted = Mat2::Identity();
+      inverted(0, 0) = -1.0;
+      set_affine_deformation(model, 3, inverted);
+      Stepper solver(model, nullptr, integrator);
+      try {
+        solver.step(1e-4);
+        FAIL() << "no error";
+      } catch (const Error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("body 'g3': invalid deformation at Gauss point"), std::string::npos)
+            << what;
+        EXPECT_NE(what.find("at step 0"), std::string::npos) << what;
+      }
+    }
+  omp_set_num_threads(omp_get_num_procs());
+}
+
+TEST(Profile, TheForceAndVelocityLoopIsBookedToBothPhases) {
+  // The internal forces and the velocities share one loop over bodies (node_update.cpp), its
+  // time split by what the threads measured in each: both phases get a share, and the phases
+  // add up to the steps' time.
+  Model model;
+  const MaterialId m = model.add_material(scenes::elastic_material(MaterialLaw::neo_hookean, 0.05));
+  for (int k = 0; k < 4; ++k)
+    scenes::add_disc(model, m, Vec2(1.2 * k, 0.0), 0.5, 0.1, "g" + std::to_string(k));
+  for (const IntegratorParams& integrator :
+       {IntegratorParams::explicit_integrator(), IntegratorParams::imex()}) {
+    Stepper solver(model, nullptr, integrator);
+    const auto start = std::chrono::steady_clock::now();
+    for (int s = 0; s < 20; ++s)
+      solver.step(1e-4);
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const StepProfile& p = solver.profile();
+    EXPECT_GT(p[StepPhase::internal_forces], 0.0);
+    EXPECT_GT(p[StepPhase::velocities], 0.0);
+    EXPECT_LE(p.total(), elapsed);
+    EXPECT_EQ(p.steps, 20);
   }
 }
 

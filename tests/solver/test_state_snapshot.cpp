@@ -225,11 +225,12 @@ TEST(StateSnapshot, SolverMembersAreTheOnesTheSnapshotKnows) {
   // the expected layout here.
   // Not state: the integrator's settings (fixed parameters), the profile (timing), the IMEX
   // systems (factors are a function of the model and the step, rebuilt on demand, bitwise the
-  // same), and three scratch vectors.
+  // same), and five scratch vectors (the per-body force results and sums, the IMEX
+  // increments, the finite probes).
   const std::size_t known = sizeof(Model*) + sizeof(ContactSystem*) + sizeof(IntegratorParams) +
                             sizeof(SolverState) + sizeof(SolverPendingIncrements) +
                             sizeof(StepProfile) + sizeof(std::unique_ptr<ImplicitViscosity>) +
-                            4 * sizeof(std::vector<double>);
+                            sizeof(std::vector<BodyForceResult>) + 4 * sizeof(std::vector<double>);
   EXPECT_EQ(sizeof(Stepper), known);
 }
 
