@@ -150,6 +150,17 @@ void ContactSystem::check_segment_widths(const Model& model) const {
 
 ContactStepResult ContactSystem::add_contact_forces(Model& model,
                                                     const ContactEvaluation& evaluation) {
+  const ContactStepResult result = evaluate_contacts(model, evaluation);
+  // Bodies are independent (a contour point's row holds nodes of its own body only).
+  const auto bodies = static_cast<std::ptrdiff_t>(model.bodies.size());
+#pragma omp parallel for schedule(dynamic, 16)
+  for (std::ptrdiff_t b = 0; b < bodies; ++b)
+    add_body_contact_forces(model, static_cast<BodyId>(b));
+  return result;
+}
+
+ContactStepResult ContactSystem::evaluate_contacts(Model& model,
+                                                   const ContactEvaluation& evaluation) {
   if (damped_ && body_mass_.empty()) update_body_masses(model);
   update_geometry(model);
   const BroadPhaseInput input{positions_, node_body_, segment_start_, segment_end_, segment_body_};
@@ -354,11 +365,9 @@ void ContactSystem::add_force_at_point(Model& model, int point, const Vec2& f, c
   model.rigid.torque[r] += cross(arm, f);
 }
 
-void ContactSystem::spread_point_forces(Model& model) {
-  // The forces on deformable bodies' contour points, in scatter order, sorted by body with a
-  // stable counting sort: each body then receives its forces in the order the serial scatter
-  // gave them, and a node's sum is the same bit for bit, whatever the thread count. Bodies
-  // are independent (a contour point's row holds nodes of its own body only): in parallel.
+void ContactSystem::sort_point_forces_by_body(const Model& model) {
+  // A stable counting sort: each body then receives its forces in the order the serial
+  // scatter gave them, and a node's sum is the same bit for bit, whatever the thread count.
   const std::size_t body_count = model.bodies.size();
   const auto body_of = [&](const PointForce& pf) {
     return static_cast<std::size_t>(node_body_[static_cast<std::size_t>(pf.point)]);
@@ -372,25 +381,26 @@ void ContactSystem::spread_point_forces(Model& model) {
   body_force_fill_.assign(body_force_start_.begin(), body_force_start_.end() - 1);
   for (const PointForce& pf : point_forces_)
     sorted_point_forces_[body_force_fill_[body_of(pf)]++] = pf;
-  const auto bodies = static_cast<std::ptrdiff_t>(body_count);
-#pragma omp parallel for schedule(dynamic, 16)
-  for (std::ptrdiff_t i = 0; i < bodies; ++i) {
-    const auto b = static_cast<std::size_t>(i);
-    const Body& body = model.bodies[b];
-    double moment = 0.0;
-    for (std::size_t k = body_force_start_[b]; k < body_force_start_[b + 1]; ++k) {
-      const PointForce& pf = sorted_point_forces_[k];
-      moment += add_contour_node_force(
-          model, body, body.node_begin + (pf.point - body.contour_begin), pf.force, rotations_[b]);
-    }
-    // The moments of the contour points' hat offsets, spread once per body (kinematics.h).
-    add_body_rotation_moment(model, body, moment, rotations_[b]);
+}
+
+void ContactSystem::add_body_contact_forces(Model& model, BodyId body_id) const {
+  const auto b = static_cast<std::size_t>(body_id);
+  const Body& body = model.bodies[b];
+  if (body.kind == BodyKind::rigid) return;  // applied by the scatter
+  // The point forces onto the body's MLS parameters, then the moment of their hat offsets
+  // (kinematics.h), spread once per body.
+  double moment = 0.0;
+  for (std::size_t k = body_force_start_[b]; k < body_force_start_[b + 1]; ++k) {
+    const PointForce& pf = sorted_point_forces_[k];
+    moment += add_contour_node_force(model, body, body.node_begin + (pf.point - body.contour_begin),
+                                     pf.force, rotations_[b]);
   }
+  add_body_rotation_moment(model, body, moment, rotations_[b]);
 }
 
 ContactStepResult ContactSystem::scatter_forces(Model& model) {
-  // Serial in candidate order (deterministic whatever the thread count), but for the spread
-  // of the deformable bodies' point forces to their nodes (spread_point_forces).
+  // Serial in candidate order (deterministic whatever the thread count); the deformable
+  // bodies' point forces are spread to their nodes body by body (add_body_contact_forces).
   ContactStepResult result;
   std::vector<ContactHistoryEntry>& next = next_histories_;
   next.clear();
@@ -416,7 +426,7 @@ ContactStepResult ContactSystem::scatter_forces(Model& model) {
     if (new_history_[g].active || new_history_[g].stored_slip != 0.0)
       next.push_back({r.slave_point, r.master_body, new_history_[g]});
   }
-  spread_point_forces(model);
+  sort_point_forces_by_body(model);
   histories_.swap(next);
   return result;
 }

@@ -105,6 +105,13 @@ class ContactSystem {
   // forces (fx, fy) and rigid forces (fx, fy, torque). Call once per step, with the step's
   // `evaluation` context.
   ContactStepResult add_contact_forces(Model& model, const ContactEvaluation& evaluation = {});
+  // The same in two parts, for a caller that visits every body once afterwards (the Stepper's
+  // loop over bodies, solver/node_update.cpp, which spreads a body's contact forces while its
+  // nodes are in that core's cache): evaluate_contacts applies the forces on rigid bodies and
+  // holds those on deformable bodies' contour points, add_body_contact_forces adds one body's
+  // to its nodes. Each body gets the same sums, bit for bit, as from add_contact_forces.
+  ContactStepResult evaluate_contacts(Model& model, const ContactEvaluation& evaluation = {});
+  void add_body_contact_forces(Model& model, BodyId body) const;
 
   const std::vector<ContactRecord>& records() const { return records_; }
   const std::vector<ContactHistoryEntry>& histories() const { return histories_; }
@@ -198,11 +205,11 @@ class ContactSystem {
   double slip_increment(const Model& model, int slave, const Body& master_body,
                         const GroupProjection& projection) const;
   // Adds force f, applied at `at`, to the contour point's body: a rigid body's force and
-  // torque at once, a deformable body's point forces for spread_point_forces.
+  // torque at once, a deformable body's point forces for add_body_contact_forces.
   void add_force_at_point(Model& model, int point, const Vec2& f, const Vec2& at);
-  // The deformable bodies' point forces onto their MLS parameters, with the moments of their
-  // hat offsets (kinematics.h), body by body in parallel.
-  void spread_point_forces(Model& model);
+  // The deformable bodies' point forces sorted by body (stable: in scatter order within each
+  // body), for add_body_contact_forces.
+  void sort_point_forces_by_body(const Model& model);
 };
 
 }  // namespace sg

@@ -8,15 +8,13 @@
 
 namespace sg {
 
-// Loops that stream a few numbers per node (gravity, the position update) run in parallel
-// only on models of at least this many nodes. A parallel region costs more than such a
-// loop on fewer: waking sleeping threads (the passive wait policy, core/wait_policy.h) took
-// about 40 us per region on the 2-core machine of bench/results/debian12-2core, where the
-// position update of 4,366 nodes takes a few; the gravity and position phases were 6% of
-// an imex step of the 60-grain cell on 2 threads, 0.5% on 1.
-inline constexpr std::size_t kParallelStreamingNodes = 100000;
-// The same for the contour geometry of the contacts (segments and tributary lengths of every
-// contour point, a few dozen operations each).
+// Loops that stream a few numbers per contour point (their segments and tributary lengths,
+// a few dozen operations each) run in parallel only on models of at least this many points. A
+// parallel region costs more than such a loop on fewer: waking sleeping threads (the passive
+// wait policy, core/wait_policy.h) took about 40 us per region on the 2-core machine of
+// bench/results/debian12-2core, where a loop over the nodes of the 60-grain cell takes a few.
+// (The nodes' own loops, gravity and the position update, are done body by body inside the
+// step's loop over bodies: solver/node_update.cpp.)
 inline constexpr std::size_t kParallelContourPoints = 10000;
 
 template <typename Body>

@@ -6,7 +6,6 @@
 #include <exception>
 
 #include "core/error.h"
-#include "core/parallel.h"
 #include "solver/implicit_viscosity.h"
 #include "solver/stepper.h"
 
@@ -128,6 +127,20 @@ double advance_body_positions(NodeState& n, const Body& body, double dt) {
 
 }  // namespace
 
+void Stepper::apply_body_gravity(const Body& body) {
+  // With lumped (row-sum) masses, the consistent gravity load on the parameter I is
+  // integral(N_I rho g) = m_I g. Gravity acts on the physical mass (mass scaling changes the
+  // inertia only).
+  NodeState& n = model_.nodes;
+  const double bgx = model_.gravity.x() / body.mass_scale,
+               bgy = model_.gravity.y() / body.mass_scale;
+  for (int k = body.node_begin; k < body.node_end; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    n.fx[i] = n.mass[i] * bgx;
+    n.fy[i] = n.mass[i] * bgy;
+  }
+}
+
 bool Stepper::waits_for_carrier(const Body& body) const {
   if (body.node_drive < 0) return false;
   const NodeDrive& nd = model_.node_drives[static_cast<std::size_t>(body.node_drive)];
@@ -177,34 +190,42 @@ Stepper::FieldNodeUpdate Stepper::advance_field_nodes(const StepSizes& steps, Ph
   const std::vector<Mat2*>* gradients = implicit_ ? &implicit_->gradient_outputs() : nullptr;
   force_kernel();  // chosen here, outside the threads: a bad SOFTGRAIN_SIMD throws to the caller
 
-  // Each body's internal forces, velocities and positions one after the other, by the same
-  // thread while its nodes are in that core's cache: nothing in between reads another body's
-  // nodes (a body's forces are its own nodes'; a velocity drive's imposed velocities are set
-  // above). Done as two phases, each with its own dynamic schedule, half the bodies changed
-  // core between them: on the 400-grain cell (corotational, 2 threads) the velocity update's
-  // stores of the nodes' forces and velocities waited for the other core's cache lines, and
-  // the velocity phase took 3.0-4.0 s against 4.55 s on 1 thread. A body whose node drive
-  // carries a load waits for the carriers (below), which sum the forces of all its nodes.
-  // Sums are kept per body and added in body order: the result does not depend on the
-  // number of threads. Dynamic schedule: the implicit solves of the objective model cost from
-  // one to several operator applications per body, and a rebuilt preconditioner more.
+  // Each body's forces (gravity, the contact forces evaluated before, its internal forces),
+  // velocities and positions one after the other, by the same thread while its nodes are in
+  // that core's cache: nothing in between reads another body's nodes (a body's forces are its
+  // own nodes'; a velocity drive's imposed velocities are set above). A node's force is summed
+  // in the same order as by phases (gravity, contacts, internal): the same bits. Done as two
+  // phases, each with its own dynamic schedule, half the bodies changed core between them: on the
+  // 400-grain cell (corotational, 2 threads) the velocity update's stores of the nodes' forces and
+  // velocities waited for the other core's cache lines, and the velocity phase took 3.0-4.0 s
+  // against 4.55 s on 1 thread. A body whose node drive carries a load waits for the carriers
+  // (below), which sum the forces of all its nodes. Sums are kept per body and added in body order:
+  // the result does not depend on the number of threads. Dynamic schedule: the implicit solves of
+  // the objective model cost from one to several operator applications per body, and a rebuilt
+  // preconditioner more.
   const int body_count = static_cast<int>(model_.bodies.size());
   std::exception_ptr first_error;
   int first_error_body = body_count;
-  double force_seconds = 0.0, update_seconds = 0.0;
-#pragma omp parallel reduction(+ : force_seconds, update_seconds)
+  double applied_seconds = 0.0, force_seconds = 0.0, update_seconds = 0.0;
+#pragma omp parallel reduction(+ : applied_seconds, force_seconds, update_seconds)
   {
     using clock = std::chrono::steady_clock;
     clock::time_point last = clock::now();
+    const auto book = [&last](double& seconds) {
+      const clock::time_point now = clock::now();
+      seconds += std::chrono::duration<double>(now - last).count();
+      last = now;
+    };
 #pragma omp for schedule(dynamic)
     for (int b = 0; b < body_count; ++b) {
       const auto k = static_cast<std::size_t>(b);
       try {
+        apply_body_gravity(model_.body(b));
+        if (contacts_) contacts_->add_body_contact_forces(model_, b);
+        book(applied_seconds);
         body_forces_[k] =
             add_body_internal_forces(model_, b, gradients ? (*gradients)[k] : nullptr);
-        const clock::time_point forces_done = clock::now();
-        force_seconds += std::chrono::duration<double>(forces_done - last).count();
-        last = forces_done;
+        book(force_seconds);
         if (body_forces_[k].bad_gauss_point < 0 && !waits_for_carrier(model_.body(b)))
           advance_body(b, steps, drive_data);
       } catch (...) {
@@ -214,14 +235,12 @@ Stepper::FieldNodeUpdate Stepper::advance_field_nodes(const StepSizes& steps, Ph
           first_error = std::current_exception();
         }
       }
-      const clock::time_point updated = clock::now();
-      update_seconds += std::chrono::duration<double>(updated - last).count();
-      last = updated;
+      book(update_seconds);
     }
   }
-  const double loop_seconds = force_seconds + update_seconds;
-  timer.stamp_split(StepPhase::internal_forces, StepPhase::velocities,
-                    loop_seconds > 0.0 ? force_seconds / loop_seconds : 1.0);
+  timer.stamp_split({{StepPhase::contacts, applied_seconds},
+                     {StepPhase::internal_forces, force_seconds},
+                     {StepPhase::velocities, update_seconds}});
 
   FieldNodeUpdate update;
   try {  // an invalid deformation first, as when the forces were a phase of their own

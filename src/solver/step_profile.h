@@ -6,18 +6,21 @@
 //
 // The phases are those of the step as it reads (docs/architecture.md "The step"); each is
 // stamped once per step, so the profile costs 8 clock reads per step (about 0.2 us), well under
-// 1% of the smallest step we run. (The internal forces and the velocities are done body by
-// body in one loop, timed per body: two more reads per body, about 0.2% of the step.)
+// 1% of the smallest step we run. (The node forces and the velocities are done body by body in
+// one loop, timed per body: three more reads per body, about 0.3% of the step.)
 #include <array>
 #include <chrono>
 #include <cstddef>
+#include <initializer_list>
 #include <string_view>
+#include <utility>
 
 namespace sg {
 
 enum class StepPhase : std::size_t {
-  external_forces,  // gravity on the nodes, rigid accumulators cleared
-  contacts,         // broad phase refresh, narrow phase, contact laws
+  external_forces,  // rigid accumulators cleared
+  contacts,         // broad phase refresh, narrow phase, contact laws; per body: gravity on
+                    // the nodes and the spread of the contact forces
   internal_forces,  // elastic (and explicit viscous) forces of deformable bodies
   velocities,       // field-node velocities with drives and carriers (the integrator's phase)
   rigid_bodies,     // rigid degrees of freedom: velocities and positions
@@ -60,14 +63,18 @@ class PhaseTimer {
         std::chrono::duration<double>(now - last_).count();
     last_ = now;
   }
-  // Books the time since the previous stamp to two phases done together, body by body:
-  // `first_share` of it to the first (the share of the threads' time it took), the rest to
-  // the second.
-  void stamp_split(StepPhase first, StepPhase second, double first_share) {
+  // Books the time since the previous stamp to phases done together, body by body, in
+  // proportion to the threads' seconds measured in each.
+  void stamp_split(std::initializer_list<std::pair<StepPhase, double>> shares) {
     const clock::time_point now = clock::now();
     const double seconds = std::chrono::duration<double>(now - last_).count();
-    profile_.seconds[static_cast<std::size_t>(first)] += first_share * seconds;
-    profile_.seconds[static_cast<std::size_t>(second)] += (1.0 - first_share) * seconds;
+    double measured = 0.0;
+    for (const auto& [phase, share] : shares)
+      measured += share;
+    for (const auto& [phase, share] : shares)
+      profile_.seconds[static_cast<std::size_t>(phase)] +=
+          measured > 0.0 ? seconds * share / measured
+                         : seconds / static_cast<double>(shares.size());
     last_ = now;
   }
   // Books the time since the previous stamp to no phase: it was timed elsewhere (the step's

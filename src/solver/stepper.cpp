@@ -1,9 +1,9 @@
 #include "solver/stepper.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
-#include "core/parallel.h"
 
 namespace sg {
 
@@ -27,17 +27,19 @@ void Stepper::refresh_implicit_preconditioners() {
 
 // One step, as the algorithm of the header reads: forces at u_n, then velocities, then
 // positions, then the ledger of the instant t_n. Each phase is timed into profile(). The
-// contacts are all evaluated first; then each deformable body's internal forces, velocities
-// and positions are done together, body by body (node_update.cpp): they read and write that
-// body's nodes only. The positions phase holds the periodic wrap.
+// contacts are all evaluated first; then each body's node forces (gravity, its contact forces,
+// its internal forces), velocities and positions are done together, body by body
+// (node_update.cpp): they read and write that body's nodes only. The positions phase holds
+// the periodic wrap.
 void Stepper::step(double dt) {
   PhaseTimer timer(profile_);
   const StepSizes steps = step_sizes(state_.previous_dt, dt);
-  apply_external_forces();
+  clear_rigid_forces();
   timer.stamp(StepPhase::external_forces);
   const ContactStepResult contact = compute_contact_forces(steps);
   timer.stamp(StepPhase::contacts);
-  // (Its loop stamps the internal forces and the velocities, the carriers the velocities.)
+  // (Its loop stamps the contacts, the internal forces and the velocities, the carriers the
+  // velocities.)
   const FieldNodeUpdate field = advance_field_nodes(steps, timer);
   const InternalForceResult& internal = field.internal;
   const NodeUpdate& nodes = field.nodes;
@@ -52,25 +54,7 @@ void Stepper::step(double dt) {
   ++profile_.steps;
 }
 
-void Stepper::apply_external_forces() {
-  // With lumped (row-sum) masses, the consistent gravity load on the parameter I is
-  // integral(N_I rho g) = m_I g. Loops over nodes run per body, in parallel on large models
-  // (core/parallel.h): each body writes its own node range, so the result does not depend on
-  // the number of threads.
-  NodeState& n = model_.nodes;
-  const double gx = model_.gravity.x(), gy = model_.gravity.y();
-  const int body_count = static_cast<int>(model_.bodies.size());
-#pragma omp parallel for schedule(static) if (n.mass.size() >= kParallelStreamingNodes)
-  for (int b = 0; b < body_count; ++b) {
-    const Body& body = model_.body(b);
-    // Gravity acts on the physical mass (mass scaling changes the inertia only).
-    const double bgx = gx / body.mass_scale, bgy = gy / body.mass_scale;
-    for (int k = body.node_begin; k < body.node_end; ++k) {
-      const auto i = static_cast<std::size_t>(k);
-      n.fx[i] = n.mass[i] * bgx;
-      n.fy[i] = n.mass[i] * bgy;
-    }
-  }
+void Stepper::clear_rigid_forces() {
   RigidState& rigid = model_.rigid;
   std::fill(rigid.fx.begin(), rigid.fx.end(), 0.0);
   std::fill(rigid.fy.begin(), rigid.fy.end(), 0.0);
@@ -83,7 +67,9 @@ ContactStepResult Stepper::compute_contact_forces(const StepSizes& steps) {
   // and whether this is the run's first evaluation (where bonded laws form their bonds).
   const ContactEvaluation evaluation{steps.previous, state_.step == 0};
   try {
-    return contacts_->add_contact_forces(model_, evaluation);
+    // The forces on deformable bodies are added to their nodes body by body
+    // (advance_field_nodes).
+    return contacts_->evaluate_contacts(model_, evaluation);
   } catch (const Error& e) {
     SG_THROW(e.what() << " at step " << state_.step << ", time " << state_.time);
   }

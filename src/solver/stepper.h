@@ -149,11 +149,13 @@ class Stepper {
   };
 
   // The phases of step(), in order (solver/stepper.cpp).
-  void apply_external_forces();
+  // The rigid bodies' force accumulators (the nodes' forces start in advance_field_nodes).
+  void clear_rigid_forces();
   ContactStepResult compute_contact_forces(const StepSizes& steps);
-  // The internal forces at u_n, v_n+1/2, then u_n+1 = u_n + dt_+ v_n+1/2, body by body
-  // (solver/node_update.cpp); the loop's time is booked to the internal forces and the
-  // velocities by `timer`.
+  // Body by body (solver/node_update.cpp): the node forces at u_n (gravity, the contact forces
+  // evaluated before, the internal forces), v_n+1/2, then u_n+1 = u_n + dt_+ v_n+1/2. The
+  // loop's time is booked by `timer` to the contacts (gravity and the contact forces' spread),
+  // the internal forces and the velocities.
   FieldNodeUpdate advance_field_nodes(const StepSizes& steps, PhaseTimer& timer);
   // From the node carriers' servo power (summed on, so the sums keep their order).
   RigidUpdate advance_rigid_bodies(const StepSizes& steps,
@@ -169,6 +171,8 @@ class Stepper {
   // to the drive's imposed-velocity slots of `drive_data` (6 per drive, node_update.cpp);
   // their servo power.
   ServoPower advance_node_carriers(double h, double* drive_data) const;
+  // F = m g on the body's field nodes: the start of their forces.
+  void apply_body_gravity(const Body& body);
   // Whether the body's nodes are driven by a load-driven carrier, whose velocity needs the
   // forces of all its nodes first.
   bool waits_for_carrier(const Body& body) const;
