@@ -1,6 +1,7 @@
 #include "contact/broad_phase.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -142,16 +143,21 @@ Grid choose_grid(const BroadPhaseParams& params, const Extent& e, std::size_t ob
   }
 }
 
-// Bins the segments: a segment goes in every cell its bounding box overlaps (counting sort,
-// segment-major, so each cell lists its segments in increasing index order).
+// Bins the segments: a segment goes in every cell its bounding box overlaps (a counting sort
+// by cell). In parallel over segments, each slot taken with an atomic increment: the order of
+// a cell's segments then depends on the threads, and nothing depends on that order (a node's
+// query tests each segment once, whichever cell it meets it in first, and sorts what it
+// accepts). Serial, the binning was 0.28 s of the 400-grain cell's 10 s on 2 threads (about
+// 0.55 ms per build).
 void bin_segments(const BroadPhaseInput& input, const Grid& grid, std::vector<int>& cell_start,
                   std::vector<int>& cell_segments, std::vector<int>& fill) {
-  const std::size_t segment_count = input.segment_start.size();
+  const auto segment_count = static_cast<std::ptrdiff_t>(input.segment_start.size());
   const std::size_t cell_count =
       static_cast<std::size_t>(grid.nx) * static_cast<std::size_t>(grid.ny);
   cell_start.assign(cell_count + 1, 0);
-  const auto for_each_cell_of_segment = [&](std::size_t s, auto&& visit) {
-    const Vec2 &a = input.segment_start[s], &b = input.segment_end[s];
+  const auto for_each_cell_of_segment = [&](std::ptrdiff_t s, auto&& visit) {
+    const auto k = static_cast<std::size_t>(s);
+    const Vec2 &a = input.segment_start[k], &b = input.segment_end[k];
     const long long c_lo = grid.column(std::min(a.x(), b.x()));
     long long c_hi = grid.column(std::max(a.x(), b.x()));
     if (grid.periodic) c_hi = std::min(c_hi, c_lo + grid.nx - 1);  // all columns at most once
@@ -159,23 +165,32 @@ void bin_segments(const BroadPhaseInput& input, const Grid& grid, std::vector<in
     for (long long c = c_lo; c <= c_hi; ++c) {
       const int column = grid.wrap_column(c);
       for (int r = r_lo; r <= r_hi; ++r)
-        visit(grid.cell(column, r));
+        visit(static_cast<std::size_t>(grid.cell(column, r)));
     }
   };
-  for (std::size_t s = 0; s < segment_count; ++s) {
-    for_each_cell_of_segment(s, [&](int c) { ++cell_start[static_cast<std::size_t>(c) + 1]; });
-  }
-  for (std::size_t c = 0; c < cell_count; ++c)
-    cell_start[c + 1] += cell_start[c];
-  cell_segments.resize(static_cast<std::size_t>(cell_start[cell_count]));
-  // (A kept scratch: allocated anew at each build, the large grids of the 400-grain cell were
-  // fresh pages from the kernel every few steps.)
-  fill.assign(cell_start.begin(), cell_start.end() - 1);
-  for (std::size_t s = 0; s < segment_count; ++s) {
-    for_each_cell_of_segment(s, [&](int c) {
-      cell_segments[static_cast<std::size_t>(fill[static_cast<std::size_t>(c)]++)] =
-          static_cast<int>(s);
-    });
+  const auto take = [](int& counter) {
+    return std::atomic_ref<int>(counter).fetch_add(1, std::memory_order_relaxed);
+  };
+  const bool parallel = segment_count >= static_cast<std::ptrdiff_t>(kParallelContourPoints);
+#pragma omp parallel if (parallel)
+  {
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t s = 0; s < segment_count; ++s)
+      for_each_cell_of_segment(s, [&](std::size_t c) { take(cell_start[c + 1]); });
+#pragma omp single
+    {
+      for (std::size_t c = 0; c < cell_count; ++c)
+        cell_start[c + 1] += cell_start[c];
+      cell_segments.resize(static_cast<std::size_t>(cell_start[cell_count]));
+      // (A kept scratch: allocated anew at each build, the large grids of the 400-grain cell
+      // were fresh pages from the kernel every few steps.)
+      fill.assign(cell_start.begin(), cell_start.end() - 1);
+    }
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t s = 0; s < segment_count; ++s)
+      for_each_cell_of_segment(s, [&](std::size_t c) {
+        cell_segments[static_cast<std::size_t>(take(fill[c]))] = static_cast<int>(s);
+      });
   }
 }
 
@@ -284,14 +299,15 @@ void BroadPhase::build(const BroadPhaseInput& input) {
   const auto chunk_begin = [&](std::size_t c) { return c * node_count / kQueryChunks; };
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t c = 0; c < kQueryChunks; ++c) {
-    chunk_candidates_[c].clear();
+    std::vector<ContactCandidate>& chunk = chunk_candidates_[c].list;
+    chunk.clear();
     std::uint64_t* seen = thread_seen_[static_cast<std::size_t>(omp_get_thread_num())].data();
     for (std::size_t n = chunk_begin(c); n < chunk_begin(c + 1); ++n)
       query_node(params_, input, grid, cell_start_, cell_segments_, n, accept, stamp_base + n, seen,
-                 chunk_candidates_[c]);
+                 chunk);
   }
-  for (const std::vector<ContactCandidate>& chunk : chunk_candidates_)
-    candidates_.insert(candidates_.end(), chunk.begin(), chunk.end());
+  for (const ChunkCandidates& chunk : chunk_candidates_)
+    candidates_.insert(candidates_.end(), chunk.list.begin(), chunk.list.end());
 }
 
 namespace {

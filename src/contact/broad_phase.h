@@ -118,11 +118,17 @@ class BroadPhase {
   // Positions at the last build (for the skin criterion).
   std::vector<Vec2> built_nodes_, built_segment_start_, built_segment_end_;
   // Cell grid, rebuilt with the list: segments of cell c are cell_segments_[cell_start_[c]
-  // .. cell_start_[c+1]) in increasing index order (cell_fill_: scratch of the binning).
+  // .. cell_start_[c+1]), in no particular order (cell_fill_: scratch of the binning).
   std::vector<int> cell_start_, cell_segments_, cell_fill_;
-  // The node queries of build(), in kQueryChunks ranges of nodes: each range's candidates.
+  // The node queries of build(), in kQueryChunks ranges of nodes: each range's candidates,
+  // each list on a cache line of its own: the threads append to neighbouring ranges' lists at
+  // the same time, and lists whose sizes shared a line passed it from core to core at every
+  // accepted pair.
   static constexpr std::size_t kQueryChunks = 64;
-  std::vector<std::vector<ContactCandidate>> chunk_candidates_;
+  struct alignas(64) ChunkCandidates {
+    std::vector<ContactCandidate> list;
+  };
+  std::vector<ChunkCandidates> chunk_candidates_;
   // Per thread, per segment: the stamp of the last node query that met the segment. Stamps
   // only grow (never captured nor restored), so a stale entry never matches a new query.
   std::vector<std::vector<std::uint64_t>> thread_seen_;

@@ -1,6 +1,7 @@
 // Broad phase (broad_phase.h): no missed pair against brute force, periodic seam, Verlet
 // rebuild trigger, determinism, bad input.
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +13,7 @@
 
 #include "contact/broad_phase.h"
 #include "core/error.h"
+#include "core/parallel.h"
 #include "geometry/polygon.h"
 #include "geometry/shapes.h"
 
@@ -228,6 +230,37 @@ TEST(BroadPhase, BuildListsExactlyThePairsWithinCutoffPlusSkin) {
   broad.build(scene.input());
   EXPECT_EQ(std::vector<ContactCandidate>(broad.candidates().begin(), broad.candidates().end()),
             got);
+}
+
+TEST(BroadPhase, ManySegmentsAreBinnedInParallelWithTheSameList) {
+  // Over kParallelContourPoints segments the binning runs in parallel (broad_phase.cpp), and
+  // the order of a cell's segments then depends on the threads: the list must not. 1,200
+  // grains in a cell 100 long; the list is checked against brute force for every 40th node.
+  BroadPhaseParams params = periodic_scene_params();
+  params.x_max = 98.0;
+  const MovingScene scene(params, 1200, 11);
+  ASSERT_GE(scene.starts.size(), kParallelContourPoints);
+  const auto build_on = [&](int threads) {
+    omp_set_num_threads(threads);
+    BroadPhase broad(params);
+    broad.build(scene.input());
+    return std::vector<ContactCandidate>(broad.candidates().begin(), broad.candidates().end());
+  };
+  const std::vector<ContactCandidate> one = build_on(1), two = build_on(2);
+  omp_set_num_threads(omp_get_num_procs());
+  EXPECT_EQ(one, two);
+  ASSERT_TRUE(sorted(two));
+  int checked = 0;
+  for (std::size_t n = 0; n < scene.nodes.size(); n += 40)
+    for (std::size_t s = 0; s < scene.starts.size(); ++s) {
+      if (scene.node_body[n] == scene.segment_body[s]) continue;
+      const double d = brute_distance(params, scene.nodes[n], scene.starts[s], scene.ends[s]);
+      const bool within = d < params.cutoff + params.skin;
+      checked += within;
+      EXPECT_EQ(listed(two, static_cast<int>(n), static_cast<int>(s)), within)
+          << "node " << n << " segment " << s << " at distance " << d;
+    }
+  EXPECT_GT(checked, 100);
 }
 
 TEST(BroadPhase, FindsPairAcrossTheSeamWithItsShift) {
