@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/error.h"
+#include "core/parallel.h"
 #include "io/atomic_file.h"
 #include "io/vtu_document.h"
 #include "model/kinematics.h"
@@ -69,8 +70,10 @@ NodalFields evaluate_fields(const Model& model, double global_strain_rate,
   f.strain_rate_instant.resize(n);
   f.body_id.resize(n);
   f.material_id.resize(n);
-  for (std::size_t b = 0; b < model.bodies.size(); ++b) {
-    const Body& body = model.bodies[b];
+  // Each node's values are its own (rows of its own body): in parallel over bodies, the same
+  // bits on any number of threads.
+  parallel_for(static_cast<int>(model.bodies.size()), [&](int b) {
+    const Body& body = model.body(b);
     const MaterialParams& m = model.material(body.material);
     for (int i = body.node_begin; i < body.node_end; ++i) {
       const auto k = static_cast<std::size_t>(i);
@@ -87,10 +90,10 @@ NodalFields evaluate_fields(const Model& model, double global_strain_rate,
       f.strain_rate[k] = increment ? std::abs(f.strain_norm[k] - interval.previous_norm[k]) /
                                          interval.length / rate_unit
                                    : std::abs(f.strain_rate_instant[k]);
-      f.body_id[k] = static_cast<int>(b);
+      f.body_id[k] = b;
       f.material_id[k] = body.material;
     }
-  }
+  });
   // Rigid bodies: their contour points, drawn as one polygon each.
   std::vector<Vec2> contour;
   compute_contour_positions(model, contour);
@@ -127,8 +130,12 @@ double global_strain_rate(const ScenarioDef& scenario) {
 
 std::vector<double> nodal_strain_norms(const Model& model) {
   std::vector<double> norm(model.node_count());
-  for (std::size_t k = 0; k < norm.size(); ++k)
-    norm[k] = green_lagrange(node_deformation_gradient(model, static_cast<int>(k))).norm();
+  parallel_for(static_cast<int>(model.bodies.size()), [&](int b) {
+    const Body& body = model.body(b);
+    for (int i = body.node_begin; i < body.node_end; ++i)
+      norm[static_cast<std::size_t>(i)] =
+          green_lagrange(node_deformation_gradient(model, i)).norm();
+  });
   return norm;
 }
 
