@@ -9,13 +9,16 @@
 namespace sg {
 
 // Loops that stream a few numbers per contour point (their segments and tributary lengths,
-// a few dozen operations each) run in parallel only on models of at least this many points. A
-// parallel region costs more than such a loop on fewer: waking sleeping threads (the passive
-// wait policy, core/wait_policy.h) took about 40 us per region on the 2-core machine of
-// bench/results/debian12-2core, where a loop over the nodes of the 60-grain cell takes a few.
+// the broad phase's binning and rebuild test, a few dozen operations each) run in parallel
+// only on models of at least this many points. A parallel region costs more than such a loop
+// on fewer: waking sleeping threads (the passive wait policy, core/wait_policy.h) took about
+// 40 us per region on the 2-core machine of bench/results/debian12-2core; a lone run's threads
+// spin (a few us per region). At 10,000, the 60-grain cell's loops (a few thousand points, some
+// 100 us each) were serial, and its contacts took 0.93-0.96 s of 3.4-3.5 s on 2 threads
+// against 0.83-0.87 s in parallel (bench/results/debian12-2core/body_loop_speed.csv).
 // (The nodes' own loops, gravity and the position update, are done body by body inside the
 // step's loop over bodies: solver/node_update.cpp.)
-inline constexpr std::size_t kParallelContourPoints = 10000;
+inline constexpr std::size_t kParallelContourPoints = 1000;
 
 template <typename Body>
 void parallel_for(int count, Body&& body) {
