@@ -169,9 +169,26 @@ void Stepper::advance_body(BodyId b, const StepSizes& steps, double* drive_data)
   out[5] = sums.damping_correction;
 }
 
+// The forces, velocities and positions of the field nodes, body by body (stepper.h); the
+// carriers' bodies after the carriers.
 Stepper::FieldNodeUpdate Stepper::advance_field_nodes(const StepSizes& steps, PhaseTimer& timer) {
-  const double h = steps.velocity_interval;
-  NodeState& n = model_.nodes;
+  double* const drive_data = prepare_field_node_update(steps);
+  advance_bodies(steps, drive_data, timer);
+  FieldNodeUpdate update;
+  try {  // an invalid deformation first, as when the forces were a phase of their own
+    update.internal = sum_internal_forces(model_, body_forces_);
+  } catch (const Error& e) {
+    SG_THROW(e.what() << " at step " << state_.step << ", time " << state_.time);
+  }
+  if (body_error_) std::rethrow_exception(body_error_);
+  update.nodes.carriers = advance_node_carriers(steps.velocity_interval, drive_data);
+  for (int b = 0; b < static_cast<int>(model_.bodies.size()); ++b)
+    if (waits_for_carrier(model_.body(b))) advance_body(b, steps, drive_data);
+  add_node_sums(drive_data, update.nodes);
+  return update;
+}
+
+double* Stepper::prepare_field_node_update(const StepSizes& steps) {
   const std::size_t drive_count = model_.node_drives.size();
   body_sums_.assign(kBodySums * model_.bodies.size() + kDriveSums * drive_count, 0.0);
   double* const drive_data = body_sums_.data() + kBodySums * model_.bodies.size();
@@ -182,29 +199,35 @@ Stepper::FieldNodeUpdate Stepper::advance_field_nodes(const StepSizes& steps, Ph
         drive_data[kDriveSums * d + static_cast<std::size_t>(c)] =
             model_.node_drives[d].velocity[c](t_mid);
   if (implicit_) {
-    increment_x_.resize(n.vx.size());
-    increment_y_.resize(n.vy.size());
+    increment_x_.resize(model_.nodes.vx.size());
+    increment_y_.resize(model_.nodes.vy.size());
   }
   body_forces_.assign(model_.bodies.size(), BodyForceResult{});
   body_probes_.assign(model_.bodies.size(), 0.0);
-  const std::vector<Mat2*>* gradients = implicit_ ? &implicit_->gradient_outputs() : nullptr;
+  body_error_ = nullptr;
   force_kernel();  // chosen here, outside the threads: a bad SOFTGRAIN_SIMD throws to the caller
+  return drive_data;
+}
 
+void Stepper::advance_bodies(const StepSizes& steps, double* drive_data, PhaseTimer& timer) {
   // Each body's forces (gravity, the contact forces evaluated before, its internal forces),
   // velocities and positions one after the other, by the same thread while its nodes are in
   // that core's cache: nothing in between reads another body's nodes (a body's forces are its
-  // own nodes'; a velocity drive's imposed velocities are set above). A node's force is summed
-  // in the same order as by phases (gravity, contacts, internal): the same bits. Done as two
-  // phases, each with its own dynamic schedule, half the bodies changed core between them: on the
-  // 400-grain cell (corotational, 2 threads) the velocity update's stores of the nodes' forces and
-  // velocities waited for the other core's cache lines, and the velocity phase took 3.0-4.0 s
-  // against 4.55 s on 1 thread. A body whose node drive carries a load waits for the carriers
-  // (below), which sum the forces of all its nodes. Sums are kept per body and added in body order:
-  // the result does not depend on the number of threads. Dynamic schedule: the implicit solves of
-  // the objective model cost from one to several operator applications per body, and a rebuilt
-  // preconditioner more.
+  // own nodes'; a velocity drive's imposed velocities are set before). A node's force is
+  // summed in the same order as by phases (gravity, contacts, internal): the same bits.
+  //
+  // Done as two phases, each with its own dynamic schedule, half the bodies changed core
+  // between them: on the 400-grain cell (corotational, 2 threads) the velocity update's stores
+  // of the nodes' forces and velocities waited for the other core's cache lines, and the
+  // velocity phase took 3.0-4.0 s against 4.55 s on 1 thread.
+  //
+  // A body whose node drive carries a load waits for the carriers (advance_field_nodes), and
+  // one with an invalid deformation is not advanced (the step stops with its name). Dynamic
+  // schedule: the implicit solves of the objective model cost from one to several operator
+  // applications per body, and a rebuilt preconditioner more. The error of the lowest body is
+  // kept (core/parallel.h's rule), the sums per body: nothing depends on the thread count.
+  const std::vector<Mat2*>* gradients = implicit_ ? &implicit_->gradient_outputs() : nullptr;
   const int body_count = static_cast<int>(model_.bodies.size());
-  std::exception_ptr first_error;
   int first_error_body = body_count;
   double applied_seconds = 0.0, force_seconds = 0.0, update_seconds = 0.0;
 #pragma omp parallel reduction(+ : applied_seconds, force_seconds, update_seconds)
@@ -232,7 +255,7 @@ Stepper::FieldNodeUpdate Stepper::advance_field_nodes(const StepSizes& steps, Ph
 #pragma omp critical(sg_field_node_error)
         if (b < first_error_body) {
           first_error_body = b;
-          first_error = std::current_exception();
+          body_error_ = std::current_exception();
         }
       }
       book(update_seconds);
@@ -241,19 +264,9 @@ Stepper::FieldNodeUpdate Stepper::advance_field_nodes(const StepSizes& steps, Ph
   timer.stamp_split({{StepPhase::contacts, applied_seconds},
                      {StepPhase::internal_forces, force_seconds},
                      {StepPhase::velocities, update_seconds}});
+}
 
-  FieldNodeUpdate update;
-  try {  // an invalid deformation first, as when the forces were a phase of their own
-    update.internal = sum_internal_forces(model_, body_forces_);
-  } catch (const Error& e) {
-    SG_THROW(e.what() << " at step " << state_.step << ", time " << state_.time);
-  }
-  if (first_error) std::rethrow_exception(first_error);
-  update.nodes.carriers = advance_node_carriers(h, drive_data);
-  for (int b = 0; b < body_count; ++b)
-    if (waits_for_carrier(model_.body(b))) advance_body(b, steps, drive_data);
-
-  NodeUpdate& nodes = update.nodes;
+void Stepper::add_node_sums(const double* drive_data, NodeUpdate& nodes) {
   for (std::size_t b = 0; b < model_.bodies.size(); ++b) {
     const double* sums = body_sums_.data() + kBodySums * b;
     nodes.kinetic += sums[0];
@@ -263,13 +276,12 @@ Stepper::FieldNodeUpdate Stepper::advance_field_nodes(const StepSizes& steps, Ph
     nodes.force_square += sums[4];
     if (implicit_) nodes.damping_correction -= sums[5];
   }
-  for (std::size_t d = 0; d < drive_count; ++d) {
+  for (std::size_t d = 0; d < model_.node_drives.size(); ++d) {
     const double* sums = drive_data + kDriveSums * d;
     model_.node_drives[d].reaction = Vec2(sums[2], sums[3]);
     nodes.drive_work_old += sums[4];
     nodes.drive_work_new += sums[5];
   }
-  return update;
 }
 
 ServoPower Stepper::advance_node_carriers(double h, double* drive_data) const {

@@ -53,6 +53,7 @@
 // reaction is F - c v_n+1/2, so instead of R . v the ledger books the work of the load F as
 // external work and that of -c v as servo dissipation, split over two steps as for a
 // servo-loaded rigid degree of freedom; the two agree because the nodes share one velocity.
+#include <exception>
 #include <memory>
 #include <string>
 #include <vector>
@@ -171,6 +172,14 @@ class Stepper {
   // to the drive's imposed-velocity slots of `drive_data` (6 per drive, node_update.cpp);
   // their servo power.
   ServoPower advance_node_carriers(double h, double* drive_data) const;
+  // The parts of advance_field_nodes. The drives' imposed velocities and the scratch; returns
+  // where the drives' slots start in body_sums_ (6 per drive, node_update.cpp).
+  double* prepare_field_node_update(const StepSizes& steps);
+  // The loop over bodies; its time booked by `timer`. An error is left in body_error_.
+  void advance_bodies(const StepSizes& steps, double* drive_data, PhaseTimer& timer);
+  // The per-body and per-drive sums into `nodes`, in body and drive order; the drives'
+  // reactions.
+  void add_node_sums(const double* drive_data, NodeUpdate& nodes);
   // F = m g on the body's field nodes: the start of their forces.
   void apply_body_gravity(const Body& body);
   // Whether the body's nodes are driven by a load-driven carrier, whose velocity needs the
@@ -181,8 +190,10 @@ class Stepper {
   void wrap_periodic_bodies();
   void check_finite_velocities() const;
 
-  // Scratch of advance_field_nodes: per-body internal force results.
+  // Scratch of advance_field_nodes: per-body internal force results, and the error thrown by
+  // the lowest body in the loop over bodies.
   std::vector<BodyForceResult> body_forces_;
+  std::exception_ptr body_error_;
   // Scratch of advance_field_nodes: per-body partial sums, then per node drive its imposed
   // velocities and partial sums.
   std::vector<double> body_sums_;

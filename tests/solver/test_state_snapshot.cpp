@@ -6,6 +6,7 @@
 // (contact histories, previous positions), the broad phase rebuilds, rigid bodies move.
 #include <gtest/gtest.h>
 
+#include <exception>
 #include <vector>
 
 #include "core/error.h"
@@ -225,12 +226,13 @@ TEST(StateSnapshot, SolverMembersAreTheOnesTheSnapshotKnows) {
   // the expected layout here.
   // Not state: the integrator's settings (fixed parameters), the profile (timing), the IMEX
   // systems (factors are a function of the model and the step, rebuilt on demand, bitwise the
-  // same), and five scratch vectors (the per-body force results and sums, the IMEX
-  // increments, the finite probes).
+  // same), and the scratch of the loop over bodies (five vectors: the per-body force results
+  // and sums, the IMEX increments, the finite probes; the error of the lowest failing body).
   const std::size_t known = sizeof(Model*) + sizeof(ContactSystem*) + sizeof(IntegratorParams) +
                             sizeof(SolverState) + sizeof(SolverPendingIncrements) +
                             sizeof(StepProfile) + sizeof(std::unique_ptr<ImplicitViscosity>) +
-                            sizeof(std::vector<BodyForceResult>) + 4 * sizeof(std::vector<double>);
+                            sizeof(std::vector<BodyForceResult>) + 4 * sizeof(std::vector<double>) +
+                            sizeof(std::exception_ptr);
   EXPECT_EQ(sizeof(Stepper), known);
 }
 
