@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <exception>
 #include <limits>
+#include <utility>
 
 namespace sg {
 
@@ -20,23 +21,38 @@ namespace sg {
 // step's loop over bodies: solver/node_update.cpp.)
 inline constexpr std::size_t kParallelContourPoints = 1000;
 
+// The error of the lowest failing index of a parallel loop, so that the message does not
+// depend on the thread count: record() in the loop's catch block, rethrow_if_any() after it.
+class LowestIndexError {
+ public:
+  void record(int index, std::exception_ptr error) {
+#pragma omp critical(sg_lowest_index_error)
+    if (index < index_) {
+      index_ = index;
+      error_ = std::move(error);
+    }
+  }
+  void rethrow_if_any() const {
+    if (error_) std::rethrow_exception(error_);
+  }
+
+ private:
+  int index_ = std::numeric_limits<int>::max();
+  std::exception_ptr error_;
+};
+
 template <typename Body>
 void parallel_for(int count, Body&& body) {
-  std::exception_ptr first_error;
-  int first_index = std::numeric_limits<int>::max();
+  LowestIndexError error;
 #pragma omp parallel for schedule(dynamic, 4)
   for (int i = 0; i < count; ++i) {
     try {
       body(i);
     } catch (...) {
-#pragma omp critical(sg_parallel_for_error)
-      if (i < first_index) {
-        first_index = i;
-        first_error = std::current_exception();
-      }
+      error.record(i, std::current_exception());
     }
   }
-  if (first_error) std::rethrow_exception(first_error);
+  error.rethrow_if_any();
 }
 
 }  // namespace sg

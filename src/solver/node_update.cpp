@@ -6,6 +6,7 @@
 #include <exception>
 
 #include "core/error.h"
+#include "core/parallel.h"
 #include "solver/implicit_viscosity.h"
 #include "solver/stepper.h"
 
@@ -180,7 +181,7 @@ Stepper::FieldNodeUpdate Stepper::advance_field_nodes(const StepSizes& steps, Ph
   } catch (const Error& e) {
     SG_THROW(e.what() << " at step " << state_.step << ", time " << state_.time);
   }
-  if (body_error_) std::rethrow_exception(body_error_);
+  body_error_.rethrow_if_any();
   update.nodes.carriers = advance_node_carriers(steps.velocity_interval, drive_data);
   for (int b = 0; b < static_cast<int>(model_.bodies.size()); ++b)
     if (waits_for_carrier(model_.body(b))) advance_body(b, steps, drive_data);
@@ -204,7 +205,7 @@ double* Stepper::prepare_field_node_update(const StepSizes& steps) {
   }
   body_forces_.assign(model_.bodies.size(), BodyForceResult{});
   body_probes_.assign(model_.bodies.size(), 0.0);
-  body_error_ = nullptr;
+  body_error_ = LowestIndexError{};
   force_kernel();  // chosen here, outside the threads: a bad SOFTGRAIN_SIMD throws to the caller
   return drive_data;
 }
@@ -225,10 +226,9 @@ void Stepper::advance_bodies(const StepSizes& steps, double* drive_data, PhaseTi
   // one with an invalid deformation is not advanced (the step stops with its name). Dynamic
   // schedule: the implicit solves of the objective model cost from one to several operator
   // applications per body, and a rebuilt preconditioner more. The error of the lowest body is
-  // kept (core/parallel.h's rule), the sums per body: nothing depends on the thread count.
+  // kept (core/parallel.h), the sums per body: nothing depends on the thread count.
   const std::vector<Mat2*>* gradients = implicit_ ? &implicit_->gradient_outputs() : nullptr;
   const int body_count = static_cast<int>(model_.bodies.size());
-  int first_error_body = body_count;
   double applied_seconds = 0.0, force_seconds = 0.0, update_seconds = 0.0;
 #pragma omp parallel reduction(+ : applied_seconds, force_seconds, update_seconds)
   {
@@ -252,11 +252,7 @@ void Stepper::advance_bodies(const StepSizes& steps, double* drive_data, PhaseTi
         if (body_forces_[k].bad_gauss_point < 0 && !waits_for_carrier(model_.body(b)))
           advance_body(b, steps, drive_data);
       } catch (...) {
-#pragma omp critical(sg_field_node_error)
-        if (b < first_error_body) {
-          first_error_body = b;
-          body_error_ = std::current_exception();
-        }
+        body_error_.record(b, std::current_exception());
       }
       book(update_seconds);
     }

@@ -53,12 +53,12 @@
 // reaction is F - c v_n+1/2, so instead of R . v the ledger books the work of the load F as
 // external work and that of -c v as servo dissipation, split over two steps as for a
 // servo-loaded rigid degree of freedom; the two agree because the nodes share one velocity.
-#include <exception>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "contact/contact_system.h"
+#include "core/parallel.h"
 #include "model/internal_forces.h"
 #include "model/model.h"
 #include "solver/energy_ledger.h"
@@ -193,7 +193,7 @@ class Stepper {
   // Scratch of advance_field_nodes: per-body internal force results, and the error thrown by
   // the lowest body in the loop over bodies.
   std::vector<BodyForceResult> body_forces_;
-  std::exception_ptr body_error_;
+  LowestIndexError body_error_;
   // Scratch of advance_field_nodes: per-body partial sums, then per node drive its imposed
   // velocities and partial sums.
   std::vector<double> body_sums_;

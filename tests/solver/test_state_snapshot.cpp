@@ -6,10 +6,10 @@
 // (contact histories, previous positions), the broad phase rebuilds, rigid bodies move.
 #include <gtest/gtest.h>
 
-#include <exception>
 #include <vector>
 
 #include "core/error.h"
+#include "core/parallel.h"
 #include "scenes/contact_scenes.h"
 #include "scenes/free_grains.h"
 #include "solver/stable_time_step.h"
@@ -232,7 +232,7 @@ TEST(StateSnapshot, SolverMembersAreTheOnesTheSnapshotKnows) {
                             sizeof(SolverState) + sizeof(SolverPendingIncrements) +
                             sizeof(StepProfile) + sizeof(std::unique_ptr<ImplicitViscosity>) +
                             sizeof(std::vector<BodyForceResult>) + 4 * sizeof(std::vector<double>) +
-                            sizeof(std::exception_ptr);
+                            sizeof(LowestIndexError);
   EXPECT_EQ(sizeof(Stepper), known);
 }
 
