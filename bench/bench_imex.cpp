@@ -204,13 +204,13 @@ BENCHMARK(ViscousFactor)
 
 // The single-precision factor's solve (solver/envelope_cholesky_factor.h): the grains' A0 of
 // the cell (as ViscousFactor), factored in double precision, kept in single precision either
-// as a full n x n matrix (storage 0, Eigen's triangular solves of its lower triangle), by rows
-// over the whole lower triangle (1: the envelope without an ordering, the packed triangle of
-// 838f8d0 read by rows) or over the envelope in the reverse Cuthill-McKee ordering (2, what the
-// solver keeps), solved grain after grain for one right-hand side. `copies` copies of the 60
-// factors: 1 (60 grains, 2.6 MB of lower triangles: they stay in cache) or 7 (420 grains,
-// 18 MB, about the 400-grain cell's: they come from memory at each pass). Reports
-// microseconds per grain and the factors' bytes per grain.
+// as a full n x n matrix (storage 0, Eigen's triangular solves of its lower triangle), in 8 x 8
+// tiles over the whole lower triangle (1: the envelope without an ordering) or over the envelope
+// in the reverse Cuthill-McKee ordering (2, what the solver keeps), solved grain after grain for
+// one right-hand side. `copies` copies of the 60 factors: 1 (60 grains, 2.6 MB of lower
+// triangles: they stay in cache) or 7 (420 grains, 18 MB, about the 400-grain cell's: they come
+// from the L3 cache or memory at each pass). Reports microseconds per grain and the factors'
+// bytes per grain.
 //   build/bench/bench_softgrain --benchmark_filter=SinglePrecisionCholeskySolve
 void SinglePrecisionCholeskySolve(benchmark::State& state) {
   const auto storage = static_cast<int>(state.range(0));
@@ -260,7 +260,8 @@ void SinglePrecisionCholeskySolve(benchmark::State& state) {
   state.counters["us_per_grain"] =
       1e6 * wall / static_cast<double>(state.iterations()) / static_cast<double>(grains);
   state.counters["kB_per_grain"] = 1e-3 * bytes / static_cast<double>(grains);
-  const char* names[] = {"full matrix", "lower triangle by rows", "envelope, RCM ordering"};
+  const char* names[] = {"full matrix", "lower triangle in tiles",
+                         "envelope in tiles, RCM ordering"};
   state.SetLabel(std::string(names[storage]) + ", " + std::to_string(grains) + " grains");
 }
 

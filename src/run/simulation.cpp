@@ -69,9 +69,10 @@ std::vector<double> run_settings(const ScenarioDef& s, const IntegratorChoice& i
     if (!s.imex_dense_factors) v.push_back(-1.0);  // (only when off: earlier checkpoints stay)
     // (Only when it matters, a material damped by that model: a checkpoint of the exact solve,
     // the only one before the split, does not resume under the split one; nor one of sparse or
-    // full-matrix or packed factors under the single-precision envelope ones of the solves
-    // done once per step, reference_stiffness, corotational and the split. -3 and -4, which
-    // marked the full-matrix and the packed ones, are retired.)
+    // full-matrix or packed factors or envelopes by rows under the single-precision tiled
+    // envelope ones of the solves done once per step, reference_stiffness, corotational and the
+    // split. -3, -4 and -5, which marked the full-matrix, the packed and the by-rows ones, are
+    // retired.)
     const auto damped = [&](bool objective) {
       return std::any_of(s.materials.begin(), s.materials.end(), [&](const MaterialDef& m) {
         return m.damping > 0.0 && (m.damping_model == DampingModel::objective) == objective;
@@ -79,7 +80,7 @@ std::vector<double> run_settings(const ScenarioDef& s, const IntegratorChoice& i
     };
     if (s.imex_objective_split && damped(true)) v.push_back(-2.0);
     if (s.imex_dense_factors && (damped(false) || (s.imex_objective_split && damped(true))))
-      v.push_back(-5.0);
+      v.push_back(-6.0);
   }
   if (!s.contact_laws.empty()) {
     const ContactSettings c = contact_settings(s);

@@ -1,20 +1,27 @@
 #pragma once
 // The lower Cholesky factor L of a symmetric positive definite matrix, P A P^T = L L^T, kept
-// in single precision and stored by rows over its envelope: row i holds L(i, f_i .. i - 1),
-// where f_i is its first nonzero column, then 1 / L(i, i), contiguous, and the next row
-// follows it. The permutation P is a reverse Cuthill-McKee ordering of A's pattern
-// (Boost.Graph), which gathers each row's entries near the diagonal. Nothing outside the envelope
-// is dropped: the entries of L before the first nonzero of A's row are exact zeros (they are sums
-// of products of zeros), so the solve is that of the dense factor, summed in another order.
+// in single precision over its envelope, in 8 x 8 tiles. The permutation P is a reverse
+// Cuthill-McKee ordering of A's pattern (Boost.Graph), which gathers each row's entries near the
+// diagonal. The rows come in blocks of 8; a block keeps the tiles from the one holding its rows'
+// first nonzero column up to the diagonal, each row-major, and in place of the diagonal tile the
+// inverse of L's diagonal block. Nothing outside the envelope is dropped: the entries of L
+// before the first nonzero of A's row are exact zeros (they are sums of products of zeros), and
+// so are those a tile adds around the envelope.
 //
-// Why: the grains' triangular solves are bound by the bytes they read once the factors do not
-// stay in cache (every step, for each of the 2,000 grains of examples/shear-cell-full.toml).
-// A grain couples each node with those of its MLS supports, so in the ordering its rows are
-// short: 28.5 kB per grain of bench/scenes/imex-cell.toml against 36.4 kB by rows in the
-// grain's own numbering (87 kB as full matrices); 178 MiB for the papers' 2,000 grains against
-// 394 MiB for their whole lower triangles (softgrain info). Solve of a 146-DOF grain with the
-// factors from memory: 3.0 us, against 5.5 us for the lower triangle packed column after
-// column and 10 us from full matrices (bench/results/debian12-2core/envelope_factor_solve.csv).
+// Why: the grains' triangular solves run every step for every grain (2,000 of them in
+// examples/shear-cell-full.toml). Stored by rows over the envelope (28.5 kB per 146-DOF grain of
+// bench/scenes/imex-cell.toml), a solve was a chain of short dot products and axpys, one row
+// waiting for the previous one's unknown: 2.7 us per grain, bound by the instructions per row
+// and that chain, not by the bytes (3.2 us from memory). In tiles (34 kB, the 8 x 8 tiles round
+// the envelope out), the products with the known unknowns are whole tiles (8 AVX2 multiplies
+// and adds, the 8 rows' sums independent) and a block's own unknowns are one more tile product
+// with the inverse diagonal block instead of 8 dependent rows: 1.8 us in cache, 2.1 us from L3
+// (bench/results/debian12-2core/envelope_factor_solve.csv); at the papers' size (factors from
+// memory, 178 -> 204 MiB) the imex step still gained about 5%.
+//
+// Determinism: the AVX2 kernels (chosen at run time where the processor has them) and the
+// portable ones do the same multiplies and adds in the same order (8 partial sums per row, added
+// pairwise in a fixed order, no fused multiply-add): the same bits on any x86-64 machine.
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 #include <cstddef>
@@ -33,29 +40,37 @@ class EnvelopeCholeskyFactor {
   // precision. False if `a` is not positive definite (the factor is then unusable).
   bool factor(const Eigen::MatrixXd& a);
 
-  // x <- A^-1 x (original numbering): L y = P x by rows (dot products), then L^T z = y by
-  // rows of L (axpy), x = P^T z.
+  // x <- A^-1 x (original numbering): L y = P x a block of rows at a time (the tiles left of the
+  // diagonal, then the inverse diagonal block), L^T z = y a block at a time from the last, then
+  // x = P^T z.
   void solve_in_place(Eigen::VectorXf& x) const;
+  // The same without the AVX2 kernels, for the test that both give the same bits.
+  void solve_in_place_portable(Eigen::VectorXf& x) const;
 
   Eigen::Index size() const { return n_; }
-  // Values and row offsets (the ordering and the scratch vector are a few n).
+  // Tiles and block offsets (the ordering and the scratch vector are a few n).
   std::size_t bytes() const {
-    return values_.size() * sizeof(float) + row_start_.size() * sizeof(std::size_t);
+    return tiles_.size() * sizeof(Tile) + block_start_.size() * sizeof(std::size_t) +
+           first_tile_.size() * sizeof(int);
   }
 
- private:
-  struct EnvelopeRow {
-    const float* entries;  // L(i, i - below .. i - 1)
-    Eigen::Index below;    // i - f_i
-    float inverse_diagonal;
+  static constexpr int kTile = 8;  // rows and columns of a tile: one AVX2 register of floats
+  struct alignas(32) Tile {
+    float v[kTile * kTile];  // row-major
   };
-  EnvelopeRow row(Eigen::Index i) const;
+
+ private:
+  void store_tiles(const Eigen::MatrixXd& l);
+  template <typename Kernels>
+  void solve_with(Eigen::VectorXf& x, const Kernels& kernels) const;
 
   Eigen::Index n_ = 0;
-  std::vector<int> order_;              // position k of the ordering holds original index order_[k]
-  std::vector<float> values_;           // row i: L(i, i + 1 - length_i .. i)
-  std::vector<std::size_t> row_start_;  // row i is values_[row_start_[i] .. row_start_[i + 1])
-  mutable Eigen::VectorXf permuted_;    // scratch of the solve (one per body: thread-safe per body)
+  std::vector<int> order_;   // position k of the ordering holds original index order_[k]
+  std::vector<Tile> tiles_;  // block b's: tiles_[block_start_[b] .. block_start_[b + 1]), the
+                             // last its inverse diagonal block
+  std::vector<std::size_t> block_start_;
+  std::vector<int> first_tile_;  // block b's first tile column (its tiles: first_tile_[b] .. b)
+  mutable Eigen::VectorXf permuted_;  // scratch of the solve (one per body: thread-safe per body)
 };
 
 }  // namespace sg

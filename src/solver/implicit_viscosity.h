@@ -65,9 +65,9 @@
 //     1e-7 relative. On bench/scenes/imex-cell.toml (60 grains, 2 threads) whole
 //     reference_stiffness and corotational runs 1.16 and 1.20 times faster, mu within 2.7e-4
 //     relative of the sparse factors (bench/results/debian12-2core/dense_factor_single_*.csv).
-//     The factor is stored by rows over its envelope in a reverse Cuthill-McKee ordering
-//     (EnvelopeCholeskyFactor: Eigen has neither envelope storage nor that ordering), one
-//     short stream of memory per solve; the sparse factors (0.5 GB for the 2,000 grains of
+//     The factor is kept over its envelope in a reverse Cuthill-McKee ordering, in 8 x 8 tiles
+//     solved a block of rows at a time (EnvelopeCholeskyFactor: Eigen has neither envelope
+//     storage nor that ordering); the sparse factors (0.5 GB for the 2,000 grains of
 //     examples/shear-cell-full.toml) are released;
 //   - the exact objective solve's preconditioner, from half full: Eigen::LDLT in double
 //     precision, which its conjugate gradients apply 2 to 4 times per step while it is in

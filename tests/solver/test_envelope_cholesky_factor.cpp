@@ -55,24 +55,27 @@ double relative_error(const EnvelopeCholeskyFactor& factor, const Eigen::MatrixX
 }
 
 // The single-precision solve is A^-1 b to single-precision round-off, for sizes that cross
-// every row count (1, 2, a grain's 146 DOFs, a papers' grain's 422): a wrong row offset or a
-// transposed pass is off by order one. A dense matrix's envelope is its lower triangle.
+// every tile boundary (1, 2, 3, a grain's 146 DOFs, a papers' grain's 422: a last block of 1,
+// 2, 3, 2 and 6 rows): a wrong tile offset or a transposed pass is off by order one. A dense
+// matrix's envelope is its lower triangle: all the tiles of the lower block triangle.
 TEST(EnvelopeCholeskyFactor, SolvesTheSystemToSinglePrecisionRoundOff) {
   for (const Eigen::Index n : {1, 2, 3, 146, 422}) {
     const Eigen::MatrixXd a = well_conditioned(n, static_cast<unsigned>(n));
     EnvelopeCholeskyFactor factor;
     ASSERT_TRUE(factor.factor(a));
     EXPECT_EQ(factor.size(), n);
-    EXPECT_EQ(factor.bytes(), static_cast<std::size_t>(n * (n + 1) / 2) * sizeof(float) +
-                                  static_cast<std::size_t>(n + 1) * sizeof(std::size_t));
+    const auto blocks = static_cast<std::size_t>((n + 7) / 8);
+    EXPECT_EQ(factor.bytes(), blocks * (blocks + 1) / 2 * 64 * sizeof(float) +
+                                  (blocks + 1) * sizeof(std::size_t) + blocks * sizeof(int));
     // float epsilon 6e-8 times the condition number (about 10) and a small multiple.
     EXPECT_LT(relative_error(factor, a), 5e-6) << "n = " << n;
   }
 }
 
 // On a sparse operator numbered at random, the ordering shrinks the envelope to a fraction of
-// the lower triangle (a band of about 2 m nodes on the m x m grid) and the solve, permuted in
-// and out, is still A^-1 b. Without the ordering the envelope stays nearly the whole triangle.
+// the lower triangle (a band of about 2 m nodes on the m x m grid, rounded out to whole 8 x 8
+// tiles) and the solve, permuted in and out, is still A^-1 b. Without the ordering the envelope
+// stays nearly the whole triangle.
 TEST(EnvelopeCholeskyFactor, TheOrderingShrinksTheEnvelopeAndKeepsTheSolution) {
   const int m = 12;
   const Eigen::MatrixXd a = shuffled_grid_operator(m, 3);
@@ -83,7 +86,7 @@ TEST(EnvelopeCholeskyFactor, TheOrderingShrinksTheEnvelopeAndKeepsTheSolution) {
   ordered.order(a.sparseView());
   ASSERT_TRUE(ordered.factor(a));
   EXPECT_GT(plain.bytes(), 8 * triangle / 10);
-  EXPECT_LT(ordered.bytes(), 3 * triangle / 10);
+  EXPECT_LT(ordered.bytes(), 35 * triangle / 100);
   EXPECT_LT(relative_error(plain, a), 5e-6);
   EXPECT_LT(relative_error(ordered, a), 5e-6);
 }
@@ -102,6 +105,21 @@ TEST(EnvelopeCholeskyFactor, ReadsOnlyTheLowerTriangle) {
   clean.solve_in_place(x);
   dirty.solve_in_place(y);
   EXPECT_EQ(x, y);
+}
+
+// The AVX2 tile kernels (chosen where the processor has them) and the portable ones add the
+// same products in the same order: the same bits, so that results do not depend on the machine.
+TEST(EnvelopeCholeskyFactor, TheAvx2AndPortableSolvesGiveTheSameBits) {
+  for (const int m : {3, 12}) {
+    const Eigen::MatrixXd a = shuffled_grid_operator(m, 5);
+    EnvelopeCholeskyFactor factor;
+    factor.order(a.sparseView());
+    ASSERT_TRUE(factor.factor(a));
+    Eigen::VectorXf best = Eigen::VectorXf::LinSpaced(a.rows(), -1.0f, 2.0f), portable = best;
+    factor.solve_in_place(best);
+    factor.solve_in_place_portable(portable);
+    EXPECT_EQ(best, portable) << "m = " << m;
+  }
 }
 
 // A matrix that is not positive definite is refused.
