@@ -233,7 +233,11 @@ void compute_contour_positions(const Model& model, std::vector<Vec2>& positions,
   positions.resize(model.contour_point_count());
   if (rotations != nullptr) rotations->assign(model.bodies.size(), BodyRotation{});
   const int count = static_cast<int>(model.bodies.size());
-#pragma omp parallel for schedule(dynamic, 16)
+  // Static: a body's contour is computed by the same thread from one step to the next, mostly
+  // the one that moved its nodes (the step's loop over bodies gives each thread a contiguous
+  // range of bodies, solver/node_update.cpp); a dynamic schedule sent about half the bodies'
+  // nodes from one core's cache to the other's at every step.
+#pragma omp parallel for schedule(static)
   for (int b = 0; b < count; ++b) {
     const Body& body = model.body(b);
     if (body.kind == BodyKind::rigid) {

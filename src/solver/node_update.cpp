@@ -5,6 +5,8 @@
 #include <cmath>
 #include <exception>
 
+#include <omp.h>
+
 #include "core/error.h"
 #include "core/parallel.h"
 #include "solver/implicit_viscosity.h"
@@ -223,38 +225,46 @@ void Stepper::advance_bodies(const StepSizes& steps, double* drive_data, PhaseTi
   // velocity phase took 3.0-4.0 s against 4.55 s on 1 thread.
   //
   // A body whose node drive carries a load waits for the carriers (advance_field_nodes), and
-  // one with an invalid deformation is not advanced (the step stops with its name). Dynamic
-  // schedule: the implicit solves of the objective model cost from one to several operator
-  // applications per body, and a rebuilt preconditioner more. The error of the lowest body is
-  // kept (core/parallel.h), the sums per body: nothing depends on the thread count.
+  // one with an invalid deformation is not advanced (the step stops with its name). Each thread
+  // takes a contiguous range of bodies of about equal cost, the bodies' times at the previous
+  // step (core/cost_balanced_ranges.h): a body keeps its thread, and its nodes that core's
+  // cache, from one step to the next, and the objective model's uneven solves stay balanced.
+  // The error of the lowest body is kept (core/parallel.h), the sums per body: nothing depends
+  // on the thread count or on which thread ran a body.
   const std::vector<Mat2*>* gradients = implicit_ ? &implicit_->gradient_outputs() : nullptr;
-  const int body_count = static_cast<int>(model_.bodies.size());
+  body_ranges_.resize(model_.bodies.size());
   double applied_seconds = 0.0, force_seconds = 0.0, update_seconds = 0.0;
 #pragma omp parallel reduction(+ : applied_seconds, force_seconds, update_seconds)
   {
+#pragma omp single
+    body_ranges_.plan(omp_get_num_threads());
     using clock = std::chrono::steady_clock;
     clock::time_point last = clock::now();
     const auto book = [&last](double& seconds) {
       const clock::time_point now = clock::now();
-      seconds += std::chrono::duration<double>(now - last).count();
+      const double elapsed = std::chrono::duration<double>(now - last).count();
+      seconds += elapsed;
       last = now;
+      return elapsed;
     };
-#pragma omp for schedule(dynamic)
-    for (int b = 0; b < body_count; ++b) {
-      const auto k = static_cast<std::size_t>(b);
+    const int thread = omp_get_thread_num();
+    for (std::size_t k = body_ranges_.next(thread); k != CostBalancedRanges::none();
+         k = body_ranges_.next(thread)) {
+      const auto b = static_cast<BodyId>(k);
+      double body_seconds = 0.0;
       try {
         apply_body_gravity(model_.body(b));
         if (contacts_) contacts_->add_body_contact_forces(model_, b);
-        book(applied_seconds);
+        body_seconds += book(applied_seconds);
         body_forces_[k] =
             add_body_internal_forces(model_, b, gradients ? (*gradients)[k] : nullptr);
-        book(force_seconds);
+        body_seconds += book(force_seconds);
         if (body_forces_[k].bad_gauss_point < 0 && !waits_for_carrier(model_.body(b)))
           advance_body(b, steps, drive_data);
       } catch (...) {
         body_error_.record(b, std::current_exception());
       }
-      book(update_seconds);
+      body_ranges_.record(k, body_seconds + book(update_seconds));
     }
   }
   timer.stamp_split({{StepPhase::contacts, applied_seconds},

@@ -58,6 +58,7 @@
 #include <vector>
 
 #include "contact/contact_system.h"
+#include "core/cost_balanced_ranges.h"
 #include "core/parallel.h"
 #include "model/internal_forces.h"
 #include "model/model.h"
@@ -194,6 +195,9 @@ class Stepper {
   // the lowest body in the loop over bodies.
   std::vector<BodyForceResult> body_forces_;
   LowestIndexError body_error_;
+  // Which thread takes which bodies in the loop over bodies: their times at the previous step.
+  // (Not state: it changes which thread runs a body, never a result.)
+  CostBalancedRanges body_ranges_;
   // Scratch of advance_field_nodes: per-body partial sums, then per node drive its imposed
   // velocities and partial sums.
   std::vector<double> body_sums_;

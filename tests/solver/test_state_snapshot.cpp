@@ -227,12 +227,13 @@ TEST(StateSnapshot, SolverMembersAreTheOnesTheSnapshotKnows) {
   // Not state: the integrator's settings (fixed parameters), the profile (timing), the IMEX
   // systems (factors are a function of the model and the step, rebuilt on demand, bitwise the
   // same), and the scratch of the loop over bodies (five vectors: the per-body force results
-  // and sums, the IMEX increments, the finite probes; the error of the lowest failing body).
+  // and sums, the IMEX increments, the finite probes; the error of the lowest failing body; the
+  // bodies' ranges per thread, which change which thread runs a body, not its result).
   const std::size_t known = sizeof(Model*) + sizeof(ContactSystem*) + sizeof(IntegratorParams) +
                             sizeof(SolverState) + sizeof(SolverPendingIncrements) +
                             sizeof(StepProfile) + sizeof(std::unique_ptr<ImplicitViscosity>) +
                             sizeof(std::vector<BodyForceResult>) + 4 * sizeof(std::vector<double>) +
-                            sizeof(LowestIndexError);
+                            sizeof(LowestIndexError) + sizeof(CostBalancedRanges);
   EXPECT_EQ(sizeof(Stepper), known);
 }
 
