@@ -198,8 +198,8 @@ void EnvelopeCholeskyFactor::solve_with(Eigen::VectorXf& x, const Kernels& kerne
   for (Eigen::Index k = 0; k < n_; ++k)
     permuted_[k] = x[order_[static_cast<std::size_t>(k)]];
   float* y = permuted_.data();
-  // L y = P b, a block of rows at a time: the sums over the tiles left of the diagonal, then
-  // the diagonal tile's triangle, row after row.
+  // L y = P b, a block of rows at a time: y_block = D^-1 (b_block - sum of the tiles left of the
+  // diagonal times their unknowns), D the block's diagonal block of L (its inverse is stored).
   for (Eigen::Index block = 0; block < blocks; ++block) {
     const auto b = static_cast<std::size_t>(block);
     const Tile* tiles = tiles_.data() + block_start_[b];
@@ -212,8 +212,9 @@ void EnvelopeCholeskyFactor::solve_with(Eigen::VectorXf& x, const Kernels& kerne
       rest[r] = own[r] - sums[r];
     kernels.row_sums(tiles + count, 1, rest, own);
   }
-  // L^T z = y, the last block first: the diagonal tile's triangle transposed, last row first
-  // (z_r = y_r / L_rr, then y_c -= L_rc z_r for c < r), then the tiles left of it.
+  // L^T z = y, the last block first: z_block = D^-T y_block (0 minus the products, negated:
+  // the same bits as their sum), then the tiles left of the diagonal, transposed, times z_block
+  // are subtracted from the unknowns of their columns.
   for (Eigen::Index block = blocks - 1; block >= 0; --block) {
     const auto b = static_cast<std::size_t>(block);
     const Tile* tiles = tiles_.data() + block_start_[b];
