@@ -164,10 +164,16 @@ __attribute__((target("avx2"))) void subtract_tile_columns_avx2(const Tile* tile
 }
 #endif
 
-struct TileKernels {
+}  // namespace
+
+struct EnvelopeCholeskyFactor::TileKernels {
   void (*row_sums)(const Tile*, Eigen::Index, const float*, float*);
   void (*subtract_columns)(const Tile*, Eigen::Index, const float*, float*);
 };
+
+namespace {
+
+using TileKernels = EnvelopeCholeskyFactor::TileKernels;
 
 constexpr TileKernels kPortable{tile_row_sums_portable, subtract_tile_columns_portable};
 
@@ -190,11 +196,11 @@ void EnvelopeCholeskyFactor::solve_in_place_portable(Eigen::VectorXf& x) const {
   solve_with(x, kPortable);
 }
 
-template <typename Kernels>
-void EnvelopeCholeskyFactor::solve_with(Eigen::VectorXf& x, const Kernels& kernels) const {
+void EnvelopeCholeskyFactor::solve_with(Eigen::VectorXf& x, const TileKernels& kernels) const {
   SG_ASSERT(x.size() == n_, "the right-hand side has " << x.size() << " entries, not " << n_);
   const Eigen::Index blocks = static_cast<Eigen::Index>(first_tile_.size());
-  permuted_.setZero(blocks * kTile);
+  permuted_.resize(blocks * kTile);
+  permuted_.tail(blocks * kTile - n_).setZero();  // the rows past n (their unknowns stay 0)
   for (Eigen::Index k = 0; k < n_; ++k)
     permuted_[k] = x[order_[static_cast<std::size_t>(k)]];
   float* y = permuted_.data();

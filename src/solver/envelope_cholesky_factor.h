@@ -58,11 +58,11 @@ class EnvelopeCholeskyFactor {
   struct alignas(32) Tile {
     float v[kTile * kTile];  // row-major
   };
+  struct TileKernels;  // the AVX2 or the portable tile products (envelope_cholesky_factor.cpp)
 
  private:
   void store_tiles(const Eigen::MatrixXd& l);
-  template <typename Kernels>
-  void solve_with(Eigen::VectorXf& x, const Kernels& kernels) const;
+  void solve_with(Eigen::VectorXf& x, const TileKernels& kernels) const;
 
   Eigen::Index n_ = 0;
   std::vector<int> order_;   // position k of the ordering holds original index order_[k]
