@@ -76,6 +76,11 @@ struct NodeProjection {
 NodeProjection project_on_contour_segment(const Vec2& node, const ContourView& contour,
                                           int segment);
 
+// The distance project_on_contour_segment(node, contour, segment) reports, bit for bit, without
+// its normals: a search over many candidate segments compares these and projects only on the
+// closest (ContactSystem::project_group).
+double contour_segment_distance(const Vec2& node, const ContourView& contour, int segment);
+
 // The closest projection over `candidate_segments` (e.g. from the broad phase); ties go to
 // the lower segment index whatever the order of the candidates. segment == -1 if empty.
 NodeProjection project_on_contour(const Vec2& node, const ContourView& contour,

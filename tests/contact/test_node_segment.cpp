@@ -142,6 +142,40 @@ TEST(NodeSegment, PeriodicStripUsesItsClosingSegment) {
     EXPECT_NEAR(l, 0.25, kTol);
 }
 
+TEST(NodeSegment, TheDistanceAloneIsTheProjectionsToTheBit) {
+  // contour_segment_distance stands for project_on_contour_segment's distance where a search
+  // compares candidates (ContactSystem::project_group): any difference in the last bit could
+  // pick another segment. Nodes all around the segments (interiors and both vertices) of a zigzag
+  // whose coordinates change sign (where a + 1 (b - a) can round off b: the vertex case must use
+  // the vertex itself), of a closing segment with a shift, and of a segment of zero length.
+  std::vector<Vec2> zigzag;
+  for (int k = 0; k < 40; ++k)
+    zigzag.emplace_back(0.1 * std::sin(1.3 * k) * (k + 1) / 7.0, 0.13 * std::cos(2.1 * k));
+  const ContourView closed{zigzag, true};
+  const std::vector<Vec2> strip = {Vec2(1, 0), Vec2(0.75, 0.01), Vec2(0.5, 0), Vec2(0.25, -0.02)};
+  const ContourView shifted{strip, true, Vec2(-1, 0)};
+  const std::vector<Vec2> degenerate = {Vec2(0.2, 0.2), Vec2(0.2, 0.2), Vec2(0.7, 0.1)};
+  const ContourView with_a_point{degenerate, false};
+  int vertices = 0, interiors = 0, rounded_ends = 0;
+  for (const ContourView* view : {&closed, &shifted, &with_a_point})
+    for (int segment = 0; segment < view->segment_count(); ++segment) {
+      const Vec2 a = view->segment_start(segment), b = view->segment_end(segment);
+      for (int k = 0; k < 400; ++k) {
+        const double angle = 0.0157 * k * std::numbers::pi, radius = 0.003 + 0.0011 * k;
+        const Vec2 node =
+            a + radius * Vec2(std::cos(angle), std::sin(angle)) + (0.37 * (k % 3)) * (b - a);
+        const NodeProjection p = project_on_contour_segment(node, *view, segment);
+        (p.t > 0.0 && p.t < 1.0 ? interiors : vertices) += 1;
+        if (p.t >= 1.0 && a + 1.0 * (b - a) != b) ++rounded_ends;
+        EXPECT_EQ(contour_segment_distance(node, *view, segment), p.distance)
+            << "segment " << segment << ", node (" << node.x() << ", " << node.y() << ")";
+      }
+    }
+  EXPECT_GT(vertices, 1000);
+  EXPECT_GT(interiors, 1000);
+  EXPECT_GT(rounded_ends, 100);
+}
+
 TEST(NodeSegment, OpenContourEndsHaveOneNeighbour) {
   const std::vector<Vec2> wall = {Vec2(2, 0), Vec2(1, 0), Vec2(0, 0)};  // material below
   const ContourView view{wall, false};
