@@ -402,4 +402,13 @@ PackingResult pack_grains(const std::vector<GrainDef>& grains, const PackingDef&
   return pack_grains(contours, def, seed);
 }
 
+std::vector<std::size_t> order_along_x(const PackingResult& packed) {
+  std::vector<std::size_t> order(packed.positions.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return packed.positions[a].x() < packed.positions[b].x();
+  });
+  return order;
+}
+
 }  // namespace sg

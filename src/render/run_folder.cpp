@@ -16,13 +16,16 @@ std::vector<std::string> body_names(const ScenarioDef& s) {
   std::vector<std::string> names;
   for (const GrainSpec& g : s.grains)
     names.push_back(g.name);
-  if (s.shear_cell) {  // scenario/shear_cell.cpp: bottom, top, then grain_<i>
+  // The generated grains' names in the drawn order: the model holds them along x
+  // (geometry/packing.h order_along_x), which only a packing would tell; nothing reads a
+  // generated grain's place in this list, only those of the other bodies.
+  if (s.shear_cell) {  // scenario/shear_cell.cpp: bottom, top, then the grains
     names.push_back("bottom");
     names.push_back("top");
     for (int i = 0; i < s.shear_cell->grains; ++i)
       names.push_back("grain_" + std::to_string(i));
   }
-  if (s.compaction_box) {  // scenario/compaction_box.cpp: the four walls, then grain_<i>
+  if (s.compaction_box) {  // scenario/compaction_box.cpp: the four walls, then the grains
     for (const char* wall : {"bottom", "left", "right", "lid"})
       names.push_back(wall);
     for (int i = 0; i < s.compaction_box->grains; ++i)

@@ -34,7 +34,8 @@ struct RunInfo {
   // history given to the top's or the bottom's drive. NaN: nothing known.
   double loading_end = RunParameters::kUnknown;
   // Body names in the order build_model creates them: explicit grains, the shear cell
-  // ("bottom", "top", "grain_0" ...), then walls.
+  // ("bottom", "top", then its grains), then walls. The generated grains (grain_<i>) are listed
+  // in the drawn order, not the model's (along x): read only the other bodies' places.
   std::vector<std::string> body_names;
   std::vector<std::string> walls;  // wall names (not grains)
   // [compaction_box]: width, lid thickness, floor and the generated grains' area, as the

@@ -145,7 +145,8 @@ CompactionBoxInfo add_compaction_box(Model& model, const CompactionBoxDef& def,
   for (double& value : lid_vy.values)
     value = -value;
 
-  // Walls first ("bottom", "left", "right", "lid"), then grain_<i> in generation order.
+  // Walls first ("bottom", "left", "right", "lid"), then the grains along x (order_along_x),
+  // each named grain_<i> after its place in the drawn population.
   const double t = def.wall_thickness > 0.0 ? def.wall_thickness : grain_size;
   const double c = info.clearance, w = def.width, top = info.height + t;
   const PiecewiseLinear still = PiecewiseLinear::constant(0.0);
@@ -155,7 +156,7 @@ CompactionBoxInfo add_compaction_box(Model& model, const CompactionBoxDef& def,
   add_wall(model, "lid", Vec2(c, info.height), Vec2(w - c, info.height + t), wall_material, h,
            lid_vy);
 
-  for (std::size_t i = 0; i < info.grains.size(); ++i) {
+  for (const std::size_t i : order_along_x(packed)) {
     const GrainDef& g = info.grains[i];
     const MaterialId material =
         g.material.empty() ? grain_material : material_by_name(model, g.material);

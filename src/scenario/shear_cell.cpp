@@ -27,7 +27,8 @@ MaterialId material_by_name(const Model& model, const std::string& name) {
 void add_grains(Model& model, const std::vector<GrainDef>& grains, const PackingResult& packed,
                 const MixtureDef& mixture, MaterialId grain_material,
                 const DiscretizationParams& params) {
-  for (std::size_t i = 0; i < grains.size(); ++i) {
+  // Along the cell (order_along_x); each keeps the name of its place in the drawn population.
+  for (const std::size_t i : order_along_x(packed)) {
     const std::string& name =
         mixture.components[static_cast<std::size_t>(grains[i].component)].material;
     const MaterialId material = name.empty() ? grain_material : material_by_name(model, name);

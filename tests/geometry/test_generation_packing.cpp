@@ -110,6 +110,14 @@ TEST(Packing, DiscsInAPeriodicStripAreDenseAndDisjointAcrossTheSeam) {
   // fails on a loaded machine; 12.8 s was seen with other builds running.)
 }
 
+TEST(Packing, OrderAlongXSortsByTheCentroidsAndKeepsTiesInInputOrder) {
+  PackingResult packed;
+  packed.positions = {Vec2(3.0, 0.0), Vec2(-1.0, 5.0), Vec2(3.0, -2.0), Vec2(0.5, 1.0),
+                      Vec2(-1.0, 0.0)};
+  EXPECT_EQ(order_along_x(packed), (std::vector<std::size_t>{1, 4, 3, 0, 2}));
+  EXPECT_TRUE(order_along_x(PackingResult{}).empty());
+}
+
 TEST(Packing, DiscsInABox) {
   const std::vector<GrainDef> grains = generate_grains({{discs_of_paper_001()}}, 200, 2);
   PackingDef def;

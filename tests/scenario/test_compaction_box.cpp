@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
+#include <string>
 
 #include "geometry/polygon.h"
 #include "model/kinematics.h"
@@ -112,16 +114,27 @@ TEST(CompactionBox, FourNamedWallsThatNeverTouchAndGrainsInside) {
     EXPECT_EQ(d.velocity[1](0.0), 0.0);
     EXPECT_EQ(d.velocity[1](2.0), k == 3 ? -0.2 : 0.0) << walls[k];
   }
-  // 12 grains at 2 : 1: 8 rigid Fourier grains, 4 deformable discs.
-  int rigid = 0;
-  for (std::size_t b = 4; b < model.bodies.size(); ++b) {
-    EXPECT_EQ(model.bodies[b].name, "grain_" + std::to_string(b - 4));
-    rigid += model.bodies[b].kind == BodyKind::rigid;
-  }
-  EXPECT_EQ(rigid, 8);
-
+  // 12 grains at 2 : 1: 8 rigid Fourier grains, 4 deformable discs, along x (packing.h
+  // order_along_x: by the centroids of the packed contours; the bodies' contours are those
+  // resampled, hence the margin), each named after its place in the drawn population.
   std::vector<Vec2> p;
   compute_contour_positions(model, p);
+  int rigid = 0;
+  std::set<std::string> names;
+  double previous_x = -1e300;
+  for (std::size_t b = 4; b < model.bodies.size(); ++b) {
+    const Body& body = model.bodies[b];
+    names.insert(body.name);
+    rigid += body.kind == BodyKind::rigid;
+    const double x =
+        centroid(Polygon(p.begin() + body.contour_begin, p.begin() + body.contour_end)).x();
+    EXPECT_GT(x, previous_x - 0.05) << body.name;
+    previous_x = x;
+  }
+  EXPECT_EQ(rigid, 8);
+  EXPECT_EQ(names.size(), 12u);
+  for (int i = 0; i < 12; ++i)
+    EXPECT_TRUE(names.count("grain_" + std::to_string(i))) << i;
   auto box_of = [&](std::size_t b) {
     Vec2 lo = p[static_cast<std::size_t>(model.bodies[b].contour_begin)], hi = lo;
     for (int i = model.bodies[b].contour_begin; i < model.bodies[b].contour_end; ++i) {

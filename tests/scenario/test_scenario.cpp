@@ -4,9 +4,12 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <string>
 
 #include "core/error.h"
+#include "geometry/polygon.h"
+#include "model/kinematics.h"
 #include "model/model.h"
 #include "run/run.h"
 #include "scenario/scenario.h"
@@ -95,6 +98,28 @@ TEST(Scenario, ShearCellBuildsTwoDrivenFirstBodiesAndTheGrains) {
     EXPECT_LT(model.nodes.ref_y[i], top_min);
     EXPECT_GT(model.nodes.ref_y[i], bottom_max);
   }
+  // The grains along the cell (geometry/packing.h order_along_x: by the centroids of the packed
+  // contours; the bodies' contours are those resampled, hence the margin), each named after its
+  // place in the drawn population: every name once, and not in that order (the packing places
+  // the grains at random).
+  std::vector<Vec2> p;
+  compute_contour_positions(model, p);
+  std::set<std::string> names;
+  bool names_in_drawn_order = true;
+  double previous_x = -1e300;
+  for (std::size_t b = 2; b < model.bodies.size(); ++b) {
+    const Body& body = model.bodies[b];
+    const double x =
+        centroid(Polygon(p.begin() + body.contour_begin, p.begin() + body.contour_end)).x();
+    EXPECT_GT(x, previous_x - 0.05) << body.name;
+    previous_x = x;
+    names.insert(body.name);
+    names_in_drawn_order = names_in_drawn_order && body.name == "grain_" + std::to_string(b - 2);
+  }
+  EXPECT_EQ(names.size(), static_cast<std::size_t>(s.shear_cell->grains));
+  for (int i = 0; i < s.shear_cell->grains; ++i)
+    EXPECT_TRUE(names.count("grain_" + std::to_string(i))) << i;
+  EXPECT_FALSE(names_in_drawn_order);
 }
 
 TEST(Scenario, ErrorsNameFileLineAndKey) {
