@@ -84,8 +84,8 @@ PackingResult pack_grains(const std::vector<GrainDef>& grains, const PackingDef&
                           std::uint64_t seed);
 
 // The packed grains' indices by increasing centroid x (ties: the input order). The sample
-// builders add the grains to the model in this order: the grains are drawn and placed in random
-// order, and numbered so a grain's neighbours are anywhere among the bodies; along x, the
+// builders add the grains to the model in this order. The grains are drawn and placed in random
+// order: numbered in it, a grain's neighbours were anywhere among the bodies; along x, the
 // contact partners of a body are bodies of nearby index, whose data are near in memory and,
 // with the threads' contiguous ranges of bodies (core/cost_balanced_ranges.h), mostly on the
 // same core.
