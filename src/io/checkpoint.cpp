@@ -294,7 +294,9 @@ Checkpoint read_checkpoint(const std::filesystem::path& path,
                    << expected.contour_points << ", " << expected.gauss_points << ")");
     SG_VERIFY(f.model_hash == expected.model_hash,
               name << "written for another model (same sizes, but other geometry, materials, "
-                      "drives or periodic cell)");
+                      "drives or periodic cell, or the bodies in another order: executables "
+                      "before commit 76ed259 (softgrain --version) numbered generated grains in "
+                      "drawn order, not along x)");
     SG_VERIFY(f.settings_hash == expected.settings_hash,
               name << "written with other run settings (time step, output periods or contact "
                       "laws)");
