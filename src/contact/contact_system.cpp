@@ -237,35 +237,33 @@ ContactSystem::GroupProjection ContactSystem::project_group(
   // near x_max), each needing its own image; projecting with the first segment's shift
   // put the node on the far end and reported a deep false penetration at the corner.
   //
-  // The candidates are compared by distance alone (ties: the lower segment, as is_closer), and
+  // The candidates are compared by distance alone (is_closer: ties go to the lower segment), and
   // the normals are computed for the closest only (most of a projection's cost; the 400-grain
   // imex cell has 1.8 candidates per group).
   const Vec2 unshifted = positions_[static_cast<std::size_t>(candidates[group.begin].node)];
   const ContourView view = contour_view(master_body, positions_);
-  int best_segment = -1;
-  double best_distance = 0.0, best_shift = 0.0;
+  NodeProjection nearest;  // segment and distance only, for is_closer
+  double nearest_shift = 0.0;
   for (std::size_t c = group.begin; c < group.end; ++c) {
     const auto segment = static_cast<std::size_t>(candidates[c].segment);
     const double candidate_shift =
         model.periodic_x ? nearest_image_shift(broad_phase_.params(), unshifted,
                                                segment_start_[segment], segment_end_[segment])
                          : 0.0;
-    const int local = candidates[c].segment - master_body.contour_begin;
-    const double distance =
-        contour_segment_distance(unshifted + Vec2(candidate_shift, 0.0), view, local);
-    const bool closer = best_segment < 0 || (distance != best_distance ? distance < best_distance
-                                                                       : local < best_segment);
-    if (closer) {
-      best_segment = local;
-      best_distance = distance;
-      best_shift = candidate_shift;
+    NodeProjection candidate;
+    candidate.segment = candidates[c].segment - master_body.contour_begin;
+    candidate.distance =
+        contour_segment_distance(unshifted + Vec2(candidate_shift, 0.0), view, candidate.segment);
+    if (is_closer(candidate, nearest)) {
+      nearest = candidate;
+      nearest_shift = candidate_shift;
     }
   }
   GroupProjection best;
-  if (best_segment < 0) return best;
+  if (nearest.segment < 0) return best;
   best.projection =
-      project_on_contour_segment(unshifted + Vec2(best_shift, 0.0), view, best_segment);
-  best.shift = best_shift;
+      project_on_contour_segment(unshifted + Vec2(nearest_shift, 0.0), view, nearest.segment);
+  best.shift = nearest_shift;
   return best;
 }
 

@@ -1,7 +1,5 @@
 #include "contact/node_segment.h"
 
-#include <algorithm>
-
 #include "core/error.h"
 #include "geometry/polygon.h"
 
@@ -84,13 +82,11 @@ NodeProjection project_on_contour_segment(const Vec2& node, const ContourView& c
 double contour_segment_distance(const Vec2& node, const ContourView& contour, int segment) {
   const Vec2 a = contour.segment_start(segment);
   const Vec2 b = contour.segment_end(segment);
-  // The same operations as project_on_segment and project_on_contour_segment: on the interior
-  // the distance to a + t (b - a), at an end the distance to that vertex exactly.
-  const Vec2 ab = b - a;
-  const double length2 = ab.squaredNorm();
-  const double t = std::clamp(length2 > 0.0 ? (node - a).dot(ab) / length2 : 0.0, 0.0, 1.0);
-  if (t > 0.0 && t < 1.0) return (node - (a + t * ab)).norm();
-  return (node - (t >= 1.0 ? b : a)).norm();
+  // As project_on_contour_segment: on the interior project_on_segment's distance, at an end the
+  // distance to that vertex exactly.
+  const SegmentProjection closest = project_on_segment(node, a, b);
+  if (closest.t > 0.0 && closest.t < 1.0) return closest.distance;
+  return (node - (closest.t >= 1.0 ? b : a)).norm();
 }
 
 bool is_closer(const NodeProjection& a, const NodeProjection& b) {

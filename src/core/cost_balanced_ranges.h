@@ -28,8 +28,8 @@ class CostBalancedRanges {
     if (items != cost_.size()) cost_.assign(items, kUnknown);
   }
 
-  // The ranges of `threads` threads: thread t's is [start(t), start(t + 1)). Call outside the
-  // parallel region, before the loop.
+  // The ranges of `threads` threads: thread t's is [start(t), start(t + 1)). Called by one
+  // thread before any next() (outside the loop's parallel region, or in an omp single).
   void plan(int threads) {
     starts_.assign(static_cast<std::size_t>(threads) + 1, cost_.size());
     starts_[0] = 0;
