@@ -40,9 +40,9 @@ void write_run_checkpoint(RunContext& context, const std::filesystem::path& path
   scratch.fingerprint = sim.fingerprint;
   encode_run_loop_state(loop, scratch.run_state);
   write_checkpoint(path, scratch);
-  // A run resumed from here starts without the IMEX preconditioners' reference states: the
-  // uninterrupted run drops them too, so that both go on with the same factors.
-  sim.solver.refresh_implicit_preconditioners();
+  // A run resumed from here starts without the IMEX preconditioners' reference states and
+  // carried viscous forces: the uninterrupted run drops them too, so that both go on alike.
+  sim.solver.drop_implicit_history();
 }
 
 void resume_from_checkpoint(RunContext& context, const std::filesystem::path& path) {

@@ -95,6 +95,8 @@ std::string describe_viscous_solves(const ViscousSolveStatistics& st) {
        << static_cast<double>(st.iterations) / static_cast<double>(st.solves) << " per solve), "
        << st.factorizations << " factorizations, " << st.reassemblies
        << " reassemblies of the objective operator";
+  if (st.carried_forces > 0)
+    note << ", " << st.carried_forces << " carried viscous forces (the kernel's skipped)";
   if (st.dense_bodies > 0) note << "; dense factors for " << st.dense_bodies << " bodies";
   note << "; factors and operators " << st.matrix_bytes / 1048576.0 << " MiB";
   note << "\n";

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include "core/error.h"
 #include "model/internal_forces.h"
@@ -202,6 +203,12 @@ ImplicitViscosity::ImplicitViscosity(const Model& model, double tolerance,
       const double m = model.nodes.mass[static_cast<std::size_t>(body.node_begin + i)];
       s.mass[2 * i] = s.mass[2 * i + 1] = m;
     }
+    if (s.model == DampingModel::reference_stiffness &&
+        model.material_of(id).volumetric == VolumetricFormulation::standard) {
+      s.carried = std::make_unique<CarriedViscousForce>();
+      for (auto* field : {&s.carried->fx, &s.carried->fy, &s.carried->vx, &s.carried->vy})
+        field->resize(static_cast<std::size_t>(body.node_count()));
+    }
     if (s.model == DampingModel::objective &&
         model.material_of(id).volumetric == VolumetricFormulation::standard) {
       s.gradients.resize(static_cast<std::size_t>(body.gauss_end - body.gauss_begin));
@@ -245,6 +252,25 @@ bool ImplicitViscosity::prefers_dense_factor(BodySystem& s, const SparseMatrix& 
 void ImplicitViscosity::refresh_preconditioners() {
   for (auto& s : systems_)
     s->reference_gradients.clear();
+}
+
+void ImplicitViscosity::drop_history() {
+  refresh_preconditioners();
+  for (auto& s : systems_)
+    if (s->carried) s->carried->valid = false;
+}
+
+CarriedViscousForce* ImplicitViscosity::carried_viscous_force(BodyId b) {
+  const int index = system_of_body_[static_cast<std::size_t>(b)];
+  return index < 0 ? nullptr : systems_[static_cast<std::size_t>(index)]->carried.get();
+}
+
+bool CarriedViscousForce::holds_for(const double* velocity_x, const double* velocity_y,
+                                    double interval) const {
+  if (!valid || interval != h || age >= ImplicitViscosity::kCarriedSteps) return false;
+  const std::size_t bytes = vx.size() * sizeof(double);
+  return std::memcmp(vx.data(), velocity_x, bytes) == 0 &&
+         std::memcmp(vy.data(), velocity_y, bytes) == 0;
 }
 
 bool ImplicitViscosity::solved_once_per_step(const BodySystem& s) const {
@@ -510,6 +536,7 @@ ViscousSolveStatistics ImplicitViscosity::statistics() const {
     total.factorizations += s->statistics.factorizations;
     total.reassemblies += s->statistics.reassemblies;
     total.dense_bodies += s->dense ? 1 : 0;
+    if (s->carried) total.carried_forces += s->carried->uses;
     total.matrix_bytes += matrix_bytes(*s);
   }
   return total;

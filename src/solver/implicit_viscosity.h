@@ -82,6 +82,29 @@
 //
 // Bodies with driven nodes (the back faces of deformable strips) keep the explicit viscous
 // update: their driven components would be constraints of the solve.
+//
+// The viscous force carried by the solve (reference_stiffness, standard formulation: C = alpha
+// K0 constant). F_n holds f_v(v_n-1/2) = -C v_n-1/2, which the force kernel computes at every
+// Gauss point from v. The solve gives it for the next step at no cost: (M + h/2 C) dv = h F_n is
+// C dv = 2 (F_n - F*), so
+//   -C v_n+1/2 = f_v(v_n-1/2) + 2 (F* - F_n),
+// node by node, exact for the operator the solve applied (carry_viscous_force). The next
+// step's force phase then runs the kernel without the viscosity and adds this force
+// (CarriedViscousForce), if the velocities are still the ones it was carried to, bit for bit:
+// a rejected step restored, a checkpoint read, a caller's change of the velocities all make
+// the kernel compute it again. So does a change of h (the factor of the new operator rounds
+// differently) and every kCarriedSteps steps: a single-precision factor applies C to about
+// 1e-7 relative (its rounding), and each solve's rounding would otherwise add up. The carried
+// force is not the kernel's to the bit, so these runs differ from runs that compute f_v at
+// every step in the last digits (bench/results/debian12-2core/carried_viscous_force_*.csv);
+// they do not depend on the thread count, and a resumed run repeats an uninterrupted one
+// (drop_history at each checkpoint). Measured: the step of examples/shear-cell-full.toml 8%
+// cheaper (median of 5 paired `info` rounds, 2 threads); on the 400-grain cell the loop 1%
+// (within the noise): alone the kernel costs 1.3 times more with the viscosity, but inside a
+// step its row loops, not the stress, take the time (carried_viscous_force_speed.csv).
+//
+// Where the force is carried, f_v . v_n-1/2 = -v C v, the damping power the kernel would
+// give, is summed over the nodes.
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
@@ -104,13 +127,28 @@ struct ViscousSolveStatistics {
   long factorizations = 0;  // numeric factorizations of A0 or A_ref
   long reassemblies = 0;    // objective model: assemblies of C(F_ref) at a new reference
   long dense_bodies = 0;    // bodies whose factor is dense
+  long carried_forces = 0;  // body force evaluations that used a carried viscous force
   // The bytes the factors (once factored: after the first solve) and the stored operators
   // hold, values and indices (not the per-body vectors: a few times 2 n doubles).
   double matrix_bytes = 0.0;
 };
 
+// -C v of one body, carried from the last solve (header): valid for the velocities vx, vy of
+// its nodes and the velocity interval h.
+struct CarriedViscousForce {
+  std::vector<double> fx, fy, vx, vy;  // per node of the body
+  double h = 0.0;
+  int age = 0;         // solves since the kernel last computed the force
+  long uses = 0;       // force evaluations that used it
+  bool valid = false;  // false until a solve carries it
+  // Whether the force may be used at velocities (vx, vy) (the body's nodes) and interval h.
+  bool holds_for(const double* velocity_x, const double* velocity_y, double interval) const;
+};
+
 class ImplicitViscosity {
  public:
+  // How many solves in a row carry a body's viscous force before the kernel computes it again.
+  static constexpr int kCarriedSteps = 100;
   // `tolerance`: relative residual |r| / |h F| at which conjugate gradients stop.
   // `refactor_threshold`: the objective model's delta (above). `dense_factor_limit`: the largest
   // body (in DOFs) whose factor may be dense (above; 0: none).
@@ -123,6 +161,15 @@ class ImplicitViscosity {
 
   // The objective model's next solve of every body assembles and factors its operator anew.
   void refresh_preconditioners();
+  // What the solves carry from one step to the next is dropped: the objective model's
+  // preconditioners (refresh_preconditioners) and the carried viscous forces. Called where a
+  // checkpoint is written, so that a resumed run repeats an uninterrupted one bit for bit.
+  void drop_history();
+
+  // The viscous force carried for `body` (header), or null if its operator is not constant
+  // (not reference_stiffness, or F-bar): it is then the kernel's at every step. Thread-safe for
+  // different bodies.
+  CarriedViscousForce* carried_viscous_force(BodyId body);
 
   // The velocity increment dv of `body` (local numbering) for the step with velocity interval
   // h: solves (M + h/2 C) dv = h F with F = fx, fy (the body's total force, local numbering)
@@ -162,8 +209,9 @@ class ImplicitViscosity {
     EnvelopeCholeskyFactor single_factor;
     Eigen::VectorXf single;
     double factor_h = 0.0;
-    std::vector<Mat2> gradients;            // objective model: F per Gauss point
-    std::vector<Mat2> reference_gradients;  // F_ref, empty until the first assembly
+    std::unique_ptr<CarriedViscousForce> carried;  // reference_stiffness, standard (header)
+    std::vector<Mat2> gradients;                   // objective model: F per Gauss point
+    std::vector<Mat2> reference_gradients;         // F_ref, empty until the first assembly
     Mat2 reference_rotation = Mat2::Identity();
     Eigen::VectorXd rhs, x, r, z, p, q, work_x, work_y, split_x, split_y;  // scratch
     // Objective model, the first guess (solve()): the preconditioned right-hand side, and the

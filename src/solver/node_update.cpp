@@ -1,6 +1,7 @@
 // The field nodes' phases of Stepper::step, done body by body: the internal forces, the
 // velocity update (free nodes, driven nodes and load-driven carriers) and the position
 // update. See stepper.h.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -85,12 +86,44 @@ void advance_body_explicitly(const Model& model, NodeState& n, const Body& body,
   }
 }
 
+// The internal forces of body b at u_n, v_n-1/2 (model/internal_forces.h), with the IMEX
+// solve's `carried` viscous force if it has one and that holds at v_n-1/2 and h
+// (implicit_viscosity.h): then the kernel computes the elastic forces alone, the carried force
+// is added to them, and the damping power is -f_v . v_n-1/2.
+BodyForceResult add_internal_forces_of(Model& model, BodyId b, double h,
+                                       CarriedViscousForce* carried, Mat2* gradients) {
+  if (!carried) return add_body_internal_forces(model, b, gradients);
+  NodeState& n = model.nodes;
+  const Body& body = model.body(b);
+  const auto o = static_cast<std::size_t>(body.node_begin);
+  if (!carried->holds_for(n.vx.data() + o, n.vy.data() + o, h)) {
+    carried->age = 0;  // computed now by the kernel
+    return add_body_internal_forces(model, b, gradients);
+  }
+  BodyForceResult result =
+      add_body_internal_forces(model, b, n.ux.data() + o, n.uy.data() + o, n.vx.data() + o,
+                               n.vy.data() + o, n.fx.data() + o, n.fy.data() + o, false);
+  double power = 0.0;
+  for (std::size_t j = 0; j < carried->fx.size(); ++j) {
+    const std::size_t i = o + j;
+    n.viscous_fx[i] = carried->fx[j];
+    n.viscous_fy[i] = carried->fy[j];
+    n.fx[i] += carried->fx[j];
+    n.fy[i] += carried->fy[j];
+    power -= carried->fx[j] * n.vx[i] + carried->fy[j] * n.vy[i];
+  }
+  result.damping_power = power;
+  ++carried->uses;
+  return result;
+}
+
 // IMEX (implicit_viscosity.h): the body's increments dv from (M + h/2 C) dv = h F, the force
 // applied F* = M dv / h; the viscous force booked becomes f_v + F* - F, whose power against
-// v_n-1/2 corrects the closing half of the damping dissipation.
+// v_n-1/2 corrects the closing half of the damping dissipation. `carried` (if not null) gets
+// the viscous force at v_n+1/2, f_v + 2 (F* - F) (implicit_viscosity.h).
 void advance_body_implicitly(const Model& model, NodeState& n, BodyId b, double h,
                              ImplicitViscosity& viscosity, double* increment_x, double* increment_y,
-                             BodySums& sums) {
+                             CarriedViscousForce* carried, BodySums& sums) {
   const Body& body = model.body(b);
   const double bgx = model.gravity.x() / body.mass_scale, bgy = model.gravity.y() / body.mass_scale;
   const auto o = static_cast<std::size_t>(body.node_begin);
@@ -104,14 +137,28 @@ void advance_body_implicitly(const Model& model, NodeState& n, BodyId b, double 
     const double vx_old = n.vx[i], vy_old = n.vy[i];
     const double ax = dvx[i - o], ay = dvy[i - o];
     const double fx = n.mass[i] * ax / h, fy = n.mass[i] * ay / h;
-    sums.damping_correction += (fx - n.fx[i]) * vx_old + (fy - n.fy[i]) * vy_old;
-    n.viscous_fx[i] += fx - n.fx[i];
-    n.viscous_fy[i] += fy - n.fy[i];
+    const double change_x = fx - n.fx[i], change_y = fy - n.fy[i];  // F* - F
+    sums.damping_correction += change_x * vx_old + change_y * vy_old;
+    if (carried) {
+      carried->fx[i - o] = n.viscous_fx[i] + 2.0 * change_x;
+      carried->fy[i - o] = n.viscous_fy[i] + 2.0 * change_y;
+    }
+    n.viscous_fx[i] += change_x;
+    n.viscous_fy[i] += change_y;
     n.fx[i] = fx;
     n.fy[i] = fy;
     n.vx[i] = vx_old + ax;
     n.vy[i] = vy_old + ay;
     sums.add_node(n, i, vx_old, vy_old, bgx, bgy);
+  }
+  if (carried) {
+    std::copy(n.vx.begin() + static_cast<long>(o), n.vx.begin() + body.node_end,
+              carried->vx.begin());
+    std::copy(n.vy.begin() + static_cast<long>(o), n.vy.begin() + body.node_end,
+              carried->vy.begin());
+    carried->h = h;
+    ++carried->age;
+    carried->valid = true;
   }
 }
 
@@ -157,7 +204,7 @@ void Stepper::advance_body(BodyId b, const StepSizes& steps, double* drive_data)
   BodySums sums;
   if (implicit_ && has_implicit_viscosity(model_, b))
     advance_body_implicitly(model_, n, b, h, *implicit_, increment_x_.data(), increment_y_.data(),
-                            sums);
+                            implicit_->carried_viscous_force(b), sums);
   else if (body.node_drive < 0)
     advance_body_explicitly<false>(model_, n, body, h, drive_data, sums);
   else
@@ -257,7 +304,9 @@ void Stepper::advance_bodies(const StepSizes& steps, double* drive_data, PhaseTi
         if (contacts_) contacts_->add_body_contact_forces(model_, b);
         body_seconds += book(applied_seconds);
         body_forces_[k] =
-            add_body_internal_forces(model_, b, gradients ? (*gradients)[k] : nullptr);
+            add_internal_forces_of(model_, b, steps.velocity_interval,
+                                   implicit_ ? implicit_->carried_viscous_force(b) : nullptr,
+                                   gradients ? (*gradients)[k] : nullptr);
         body_seconds += book(force_seconds);
         if (body_forces_[k].bad_gauss_point < 0 && !waits_for_carrier(model_.body(b)))
           advance_body(b, steps, drive_data);

@@ -21,8 +21,8 @@ ViscousSolveStatistics Stepper::viscous_statistics() const {
   return implicit_ ? implicit_->statistics() : ViscousSolveStatistics{};
 }
 
-void Stepper::refresh_implicit_preconditioners() {
-  if (implicit_) implicit_->refresh_preconditioners();
+void Stepper::drop_implicit_history() {
+  if (implicit_) implicit_->drop_history();
 }
 
 // One step, as the algorithm of the header reads: forces at u_n, then velocities, then

@@ -104,9 +104,10 @@ class Stepper {
   StepProfile& profile() { return profile_; }
   // The IMEX solves so far (all zero for the explicit integrator).
   ViscousSolveStatistics viscous_statistics() const;
-  // IMEX: the objective model's preconditioners are rebuilt at the next step (called where a
-  // checkpoint is written, so that a resumed run repeats the uninterrupted run's factors).
-  void refresh_implicit_preconditioners();
+  // IMEX: what the solves carry from step to step is dropped (ImplicitViscosity::drop_history:
+  // the objective model's preconditioners, the carried viscous forces). Called where a
+  // checkpoint is written, so that a resumed run repeats the uninterrupted run bit for bit.
+  void drop_implicit_history();
 
  private:
   Model& model_;

@@ -327,14 +327,21 @@ namespace sg {
 namespace {
 
 // The IMEX integrator on the shear cell (the objective model, whose preconditioners are built
-// at reference states of the grains, solver/implicit_viscosity.h): a run stopped after a
+// at reference states of the grains, and the reference-stiffness model, whose viscous forces
+// the solves carry from step to step; solver/implicit_viscosity.h): a run stopped after a
 // checkpoint and resumed ends byte-identical to an uninterrupted one, and 1 and 2 threads
 // give the same bytes; with the objective model's split solve (the default) and its exact one.
-std::string imex_shear_cell(const std::string& name, const std::string& objective_solve) {
+// `solve`: "split", "exact" or "reference_stiffness".
+std::string imex_shear_cell(const std::string& name, const std::string& solve) {
   scenes::CohesiveShearCell c;
   c.name = name;
   c.duration = 0.6;
-  c.extra_time = "integrator = \"imex\"\nimex_objective = \"" + objective_solve + "\"";
+  if (solve == "reference_stiffness") {
+    c.extra_time = "integrator = \"imex\"";
+    c.damping_model = solve;
+  } else {
+    c.extra_time = "integrator = \"imex\"\nimex_objective = \"" + solve + "\"";
+  }
   c.checkpoint_period = 0.2;
   c.compaction_time = 0.15;
   c.velocity = 4.0;
@@ -362,12 +369,16 @@ void expect_imex_run_resumes_exactly(const std::string& solve) {
   EXPECT_EQ(expect_same_files(whole.directory, one_thread.directory), files);
 
   // The run used what makes IMEX hard to repeat: rebuilt references and (exact solve)
-  // iterations.
+  // iterations; carried viscous forces (reference_stiffness).
   const std::string log = read_bytes(whole.directory / "run.log");
   const std::size_t at = log.find("# imex: ");
   ASSERT_NE(at, std::string::npos) << log;
   const std::string note = log.substr(at, log.find('\n', at) - at);
   std::printf("%s\n", note.c_str());
+  if (solve == "reference_stiffness") {
+    EXPECT_NE(note.find(" carried viscous forces"), std::string::npos) << note;
+    return;
+  }
   const auto count_before = [&](const std::string& what) {
     const std::size_t end = note.find(what);
     const std::size_t begin = note.rfind(", ", end) + 2;
@@ -382,7 +393,7 @@ void expect_imex_run_resumes_exactly(const std::string& solve) {
 }
 
 TEST(CheckpointRestart, ImexRunResumesExactlyAndIsThreadIndependent) {
-  for (const std::string solve : {"split", "exact"}) {
+  for (const std::string solve : {"split", "exact", "reference_stiffness"}) {
     SCOPED_TRACE(solve);
     expect_imex_run_resumes_exactly(solve);
   }
