@@ -273,6 +273,15 @@ bool CarriedViscousForce::holds_for(const double* velocity_x, const double* velo
          std::memcmp(vy.data(), velocity_y, bytes) == 0;
 }
 
+void CarriedViscousForce::carried_to(const double* velocity_x, const double* velocity_y,
+                                     double interval) {
+  std::copy(velocity_x, velocity_x + vx.size(), vx.begin());
+  std::copy(velocity_y, velocity_y + vy.size(), vy.begin());
+  h = interval;
+  ++age;
+  valid = true;
+}
+
 bool ImplicitViscosity::solved_once_per_step(const BodySystem& s) const {
   return s.model != DampingModel::objective || objective_split_;
 }

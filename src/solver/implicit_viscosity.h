@@ -88,7 +88,7 @@
 // Gauss point from v. The solve gives it for the next step at no cost: (M + h/2 C) dv = h F_n is
 // C dv = 2 (F_n - F*), so
 //   -C v_n+1/2 = f_v(v_n-1/2) + 2 (F* - F_n),
-// node by node, exact for the operator the solve applied (carry_viscous_force). The next
+// node by node, exact for the operator the solve applied (solver/node_update.cpp). The next
 // step's force phase then runs the kernel without the viscosity and adds this force
 // (CarriedViscousForce), if the velocities are still the ones it was carried to, bit for bit:
 // a rejected step restored, a checkpoint read, a caller's change of the velocities all make
@@ -143,6 +143,8 @@ struct CarriedViscousForce {
   bool valid = false;  // false until a solve carries it
   // Whether the force may be used at velocities (vx, vy) (the body's nodes) and interval h.
   bool holds_for(const double* velocity_x, const double* velocity_y, double interval) const;
+  // After a solve that wrote fx, fy: the force now holds at these velocities and interval.
+  void carried_to(const double* velocity_x, const double* velocity_y, double interval);
 };
 
 class ImplicitViscosity {

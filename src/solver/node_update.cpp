@@ -1,7 +1,6 @@
 // The field nodes' phases of Stepper::step, done body by body: the internal forces, the
 // velocity update (free nodes, driven nodes and load-driven carriers) and the position
 // update. See stepper.h.
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -151,15 +150,7 @@ void advance_body_implicitly(const Model& model, NodeState& n, BodyId b, double 
     n.vy[i] = vy_old + ay;
     sums.add_node(n, i, vx_old, vy_old, bgx, bgy);
   }
-  if (carried) {
-    std::copy(n.vx.begin() + static_cast<long>(o), n.vx.begin() + body.node_end,
-              carried->vx.begin());
-    std::copy(n.vy.begin() + static_cast<long>(o), n.vy.begin() + body.node_end,
-              carried->vy.begin());
-    carried->h = h;
-    ++carried->age;
-    carried->valid = true;
-  }
+  if (carried) carried->carried_to(n.vx.data() + o, n.vy.data() + o, h);
 }
 
 // u_n+1 = u_n + dt v_n+1/2 for the body's nodes; returns a probe that is NaN iff some updated
