@@ -45,6 +45,9 @@ if [ ! -f "$base/$name/checkpoint.bin" ]; then
     --threads "$threads" > "$base/stdout" 2>&1
 fi
 
+# The seconds of a phase in the run.log profile of the run at hand ($log).
+phase() { grep -E "^#   $1 " "$log" | awk '{print $(NF-2)}'; }
+
 echo "binary,round,threads,wall_s,loop_s,ms_per_step,contacts_s,internal_forces_s,velocities_s,series_md5"
 for round in $(seq 1 "$rounds"); do
   for bin in "${binaries[@]}"; do
@@ -64,7 +67,6 @@ for round in $(seq 1 "$rounds"); do
     loop=$(grep -o '[0-9.]* s in the loop' "$log" | cut -d' ' -f1)
     # "... N steps (resumed at step M), ...": this run's steps are N - M.
     done_steps=$(sed -n 's/.* \([0-9]*\) steps (resumed at step \([0-9]*\)).*/\1 - \2/p' "$run/stdout" | bc)
-    phase() { grep -E "^#   $1 " "$log" | awk '{print $(NF-2)}'; }
     printf '%s,%s,%s,%.1f,%s,%.1f,%s,%s,%s,%s\n' "$bin" "$round" "$threads" "$wall" "$loop" \
       "$(echo "1000 * $loop / $done_steps" | bc -l)" "$(phase contacts)" \
       "$(phase 'internal forces')" "$(phase velocities)" \

@@ -265,12 +265,17 @@ CarriedViscousForce* ImplicitViscosity::carried_viscous_force(BodyId b) {
   return index < 0 ? nullptr : systems_[static_cast<std::size_t>(index)]->carried.get();
 }
 
-bool CarriedViscousForce::holds_for(const double* velocity_x, const double* velocity_y,
-                                    double interval) const {
-  if (!valid || interval != h || age >= ImplicitViscosity::kCarriedSteps) return false;
+bool CarriedViscousForce::use_at(const double* velocity_x, const double* velocity_y,
+                                 double interval) {
   const std::size_t bytes = vx.size() * sizeof(double);
-  return std::memcmp(vx.data(), velocity_x, bytes) == 0 &&
-         std::memcmp(vy.data(), velocity_y, bytes) == 0;
+  const bool holds = valid && interval == h && age < ImplicitViscosity::kCarriedSteps &&
+                     std::memcmp(vx.data(), velocity_x, bytes) == 0 &&
+                     std::memcmp(vy.data(), velocity_y, bytes) == 0;
+  if (holds)
+    ++uses;
+  else
+    age = 0;
+  return holds;
 }
 
 void CarriedViscousForce::carried_to(const double* velocity_x, const double* velocity_y,

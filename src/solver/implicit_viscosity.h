@@ -141,8 +141,9 @@ struct CarriedViscousForce {
   int age = 0;         // solves since the kernel last computed the force
   long uses = 0;       // force evaluations that used it
   bool valid = false;  // false until a solve carries it
-  // Whether the force may be used at velocities (vx, vy) (the body's nodes) and interval h.
-  bool holds_for(const double* velocity_x, const double* velocity_y, double interval) const;
+  // Whether the force may be used at velocities (vx, vy) (the body's nodes) and interval h:
+  // if so the use is counted; if not, the kernel computes the force now (age back to 0).
+  bool use_at(const double* velocity_x, const double* velocity_y, double interval);
   // After a solve that wrote fx, fy: the force now holds at these velocities and interval.
   void carried_to(const double* velocity_x, const double* velocity_y, double interval);
 };

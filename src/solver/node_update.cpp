@@ -95,10 +95,8 @@ BodyForceResult add_internal_forces_of(Model& model, BodyId b, double h,
   NodeState& n = model.nodes;
   const Body& body = model.body(b);
   const auto o = static_cast<std::size_t>(body.node_begin);
-  if (!carried->holds_for(n.vx.data() + o, n.vy.data() + o, h)) {
-    carried->age = 0;  // computed now by the kernel
+  if (!carried->use_at(n.vx.data() + o, n.vy.data() + o, h))
     return add_body_internal_forces(model, b, gradients);
-  }
   BodyForceResult result =
       add_body_internal_forces(model, b, n.ux.data() + o, n.uy.data() + o, n.vx.data() + o,
                                n.vy.data() + o, n.fx.data() + o, n.fy.data() + o, false);
@@ -112,7 +110,6 @@ BodyForceResult add_internal_forces_of(Model& model, BodyId b, double h,
     power -= carried->fx[j] * n.vx[i] + carried->fy[j] * n.vy[i];
   }
   result.damping_power = power;
-  ++carried->uses;
   return result;
 }
 
