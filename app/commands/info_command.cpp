@@ -78,7 +78,7 @@ int info(const std::string& file) {
     std::cout << "  stable step:   " << stable.dt << " ("
               << (stable.damping_limited ? "damping-limited" : "wave-speed-limited") << ", body '"
               << model.body(stable.limiting_body).name << "'; " << integrator.params.name()
-              << " integrator)\n"
+              << " integrator; " << contact_share_note(stable) << ")\n"
               << "  steps:         " << static_cast<long>(scenario.duration / stable.dt) << " for "
               << scenario.duration << " time units\n";
   std::cout << "  integrator:    " << describe(integrator) << "\n";

@@ -70,7 +70,7 @@ void write_model(std::ostream& out, const Simulation& sim) {
     out << "# stable step estimate: omega_max = " << stable.omega_max << " (body '"
         << model.body(stable.limiting_body).name << "'), "
         << (stable.damping_limited ? "damping-limited" : "wave-speed-limited")
-        << ", dt = " << stable.dt << "\n";
+        << ", dt = " << stable.dt << "; " << contact_share_note(stable) << "\n";
   out << sim.mass_scaling_note << sim.initial_state_note << "# first time step: " << sim.first_dt
       << " (adaptive: see docs/scenario.md [time])\n";
 }

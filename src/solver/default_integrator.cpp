@@ -70,11 +70,11 @@ IntegratorChoice choose_default_integrator(const Model& model, double safety,
                   "fixed_step is set, and imex would not make it larger");
   // The frequencies depend on the integrator only through F-bar bodies whose viscosity is
   // explicit (stable_time_step.h): estimated twice only when there are such bodies.
-  const std::vector<double> omega =
+  const BodyFrequencies omega =
       estimate_body_frequencies(model, contact_stiffness, explicit_integrator);
-  const std::vector<double> omega_imex =
-      has_damped_fbar_body(model) ? estimate_body_frequencies(model, contact_stiffness, imex)
-                                  : omega;
+  const BodyFrequencies omega_imex = has_damped_fbar_body(model)
+                                         ? estimate_body_frequencies(model, contact_stiffness, imex)
+                                         : omega;
   const StableStep damped = stable_time_step(model, omega, safety, explicit_integrator);
   const StableStep implicit = stable_time_step(model, omega_imex, safety, imex);
   const double gain = implicit.dt / damped.dt, cost = imex_step_cost(*costliest);

@@ -47,7 +47,7 @@ MassScalingReport apply_mass_scaling(Model& model, double target_step, double sa
   // target (a pass that scales nothing ends it; the first pass does nearly all the work).
   for (int pass = 0; pass < 4; ++pass) {
     const std::vector<double> omega =
-        estimate_body_frequencies(model, contact_stiffness, integrator);
+        estimate_body_frequencies(model, contact_stiffness, integrator).omega;
     bool scaled = false;
     for (std::size_t b = 0; b < model.bodies.size(); ++b) {
       Body& body = model.bodies[b];

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <vector>
 
 #include "core/error.h"
@@ -250,8 +251,8 @@ double contact_frequency(const Model& model, const Body& body, double k) {
 
 }  // namespace
 
-std::vector<double> estimate_body_frequencies(const Model& model, double contact_stiffness,
-                                              const IntegratorParams& integrator) {
+BodyFrequencies estimate_body_frequencies(const Model& model, double contact_stiffness,
+                                          const IntegratorParams& integrator) {
   // Bodies are independent: estimate in parallel, each into its own slot.
   const std::size_t count = model.bodies.size();
   std::vector<double> body_omega(count, 0.0), contact_omega(count, 0.0);
@@ -297,13 +298,15 @@ std::vector<double> estimate_body_frequencies(const Model& model, double contact
       second = std::max(second, contact_omega[b]);
     }
   }
-  std::vector<double> omega(count, 0.0);
+  BodyFrequencies result{std::vector<double>(count, 0.0), std::vector<double>(count, 0.0)};
   for (std::size_t b = 0; b < count; ++b) {
     const double partner = b == first_body ? second : first;
-    omega[b] = std::sqrt(body_omega[b] * body_omega[b] + contact_omega[b] * contact_omega[b] +
-                         partner * partner);
+    const double omega2 =
+        body_omega[b] * body_omega[b] + contact_omega[b] * contact_omega[b] + partner * partner;
+    result.omega[b] = std::sqrt(omega2);
+    if (omega2 > 0.0) result.contact_share[b] = 1.0 - body_omega[b] * body_omega[b] / omega2;
   }
-  return omega;
+  return result;
 }
 
 double body_damping(const Model& model, BodyId body_id, const IntegratorParams& integrator) {
@@ -314,6 +317,13 @@ double body_damping(const Model& model, BodyId body_id, const IntegratorParams& 
   return model.material_of(body_id).damping;
 }
 
+std::string contact_share_note(const StableStep& stable) {
+  std::ostringstream s;
+  s << "contact penalties carry " << std::lround(100.0 * stable.contact_share)
+    << "% of its omega^2";
+  return s.str();
+}
+
 StableStep estimate_stable_time_step(const Model& model, double safety, double contact_stiffness,
                                      const IntegratorParams& integrator) {
   SG_VERIFY(safety > 0.0 && safety <= 1.0,
@@ -322,8 +332,9 @@ StableStep estimate_stable_time_step(const Model& model, double safety, double c
                           safety, integrator);
 }
 
-StableStep stable_time_step(const Model& model, const std::vector<double>& omega, double safety,
+StableStep stable_time_step(const Model& model, const BodyFrequencies& frequencies, double safety,
                             const IntegratorParams& integrator) {
+  const std::vector<double>& omega = frequencies.omega;
   StableStep best;
   best.dt = std::numeric_limits<double>::infinity();
   // Pick the minimum in body order (deterministic whatever the thread count).
@@ -337,6 +348,7 @@ StableStep stable_time_step(const Model& model, const std::vector<double>& omega
       best.limiting_body = b;
       best.omega_max = omega[static_cast<std::size_t>(b)];
       best.damping_limited = 0.5 * alpha * best.omega_max > 1.0;
+      best.contact_share = frequencies.contact_share[static_cast<std::size_t>(b)];
     }
   }
   return best;

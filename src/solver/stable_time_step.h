@@ -10,6 +10,7 @@
 // omega_max is measured per body by power iteration on M^-1 K (K the tangent stiffness at
 // the current state, applied by differencing the force kernel): sharper than the bound
 // 2 c_p / h_min, which ignores how far MLS supports reach.
+#include <string>
 #include <vector>
 
 #include "model/model.h"
@@ -34,7 +35,8 @@ double estimate_viscous_frequency(const Model& model, BodyId body, int iteration
 // The 2 c_p / h_min bound of a body (h_min: smallest distance between two of its nodes).
 double wave_speed_frequency_bound(const Model& model, BodyId body);
 
-// omega_max of every body, as estimate_stable_time_step combines them: a deformable body's
+// omega_max of every body (`omega`), as estimate_stable_time_step combines them, and the share
+// of omega^2 its contact terms carry (`contact_share`, 0 to 1): a deformable body's
 // power-iteration frequency with its contour's contact frequency and its partner's (see
 // below), a rigid body's contact frequencies alone (0 without contacts). Deterministic,
 // parallel over bodies. An F-bar body (material.h VolumetricFormulation::fbar) whose
@@ -42,8 +44,12 @@ double wave_speed_frequency_bound(const Model& model, BodyId body);
 // frequencies (estimate_viscous_frequency): its damping C = alpha K_v is not proportional to
 // its elastic K, and with omega = max of the two the mode condition a + 2c < 4 (above) holds
 // for both a <= (omega dt)^2 and c <= alpha omega^2 dt.
-std::vector<double> estimate_body_frequencies(const Model& model, double contact_stiffness,
-                                              const IntegratorParams& integrator = {});
+struct BodyFrequencies {
+  std::vector<double> omega;
+  std::vector<double> contact_share;
+};
+BodyFrequencies estimate_body_frequencies(const Model& model, double contact_stiffness,
+                                          const IntegratorParams& integrator = {});
 
 // The stiffness-proportional damping coefficient alpha that limits a body's explicit step: 0
 // for undamped bodies (Model::is_damped) and for bodies whose viscosity `integrator` treats
@@ -55,7 +61,12 @@ struct StableStep {
   BodyId limiting_body = -1;     // the body that sets it
   double omega_max = 0.0;        // its highest frequency
   bool damping_limited = false;  // xi > 1 for that body: the damping sets the limit
+  double contact_share = 0.0;    // the share of its omega_max^2 its contacts carry (0 to 1)
 };
+// "contact penalties carry N% of its omega^2": how much of the step the contact
+// penalty sets, for run.log and `softgrain info` (docs/verification.md "The contact penalty").
+std::string contact_share_note(const StableStep& stable);
+
 // `contact_stiffness`: the largest contact penalty k (force / length^2), 0 without contacts.
 // Contact part of a deformable body's frequency: its whole contour bonded (both passes,
 // springs 2 k l_I on each node's MLS row) against an immovable partner, by power iteration on
@@ -71,7 +82,7 @@ StableStep estimate_stable_time_step(const Model& model, double safety,
 
 // The same from body frequencies already estimated (estimate_body_frequencies), so that two
 // integrators' steps can be compared at the cost of one estimate (solver/default_integrator.h).
-StableStep stable_time_step(const Model& model, const std::vector<double>& body_frequencies,
+StableStep stable_time_step(const Model& model, const BodyFrequencies& body_frequencies,
                             double safety, const IntegratorParams& integrator);
 
 }  // namespace sg

@@ -145,6 +145,25 @@ TEST(ContactStableStep, EstimateBoundsTheBondedInterfacesFrequency) {
   EXPECT_LT(estimate.omega_max, 1.15 * omega);
 }
 
+// The share of the limiting body's omega^2 the contacts carry (run.log, `softgrain info`):
+// what is left of omega^2 without its own elastic frequency, and nothing without contacts.
+TEST(ContactStableStep, ContactShareIsWhatTheContactsAddToOmegaSquared) {
+  BondedBlocks s;
+  const StableStep with = estimate_stable_time_step(s.model, 1.0, s.kn);
+  ASSERT_EQ(s.model.body(with.limiting_body).kind, BodyKind::deformable);
+  const double body_omega = estimate_max_frequency(s.model, with.limiting_body);
+  std::printf("bonded blocks: omega_max %.4g, the body's own %.4g, contact share %.3f\n",
+              with.omega_max, body_omega, with.contact_share);
+  EXPECT_NEAR(with.contact_share, 1.0 - body_omega * body_omega / (with.omega_max * with.omega_max),
+              1e-12);
+  EXPECT_GT(with.contact_share, 0.1);
+  EXPECT_LT(with.contact_share, 0.99);
+  const StableStep without = estimate_stable_time_step(s.model, 1.0, 0.0);
+  EXPECT_EQ(without.contact_share, 0.0);
+  EXPECT_DOUBLE_EQ(without.omega_max, body_omega);
+  EXPECT_EQ(contact_share_note(with).rfind("contact penalties carry ", 0), 0u);
+}
+
 // Pulled slowly (top grip at 0.01 after a ramp), undamped, at 0.8 of the estimated step, up
 // to t = 2.5 (load 0.15 = 0.74 sigma_c L: no bond reaches its strength). Nothing dissipates
 // and the ledger closes. Measured: dissipated 0, residual -1.2e-6 against an external work
