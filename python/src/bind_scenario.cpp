@@ -96,6 +96,7 @@ py::dict info(const Scenario& s, bool timing) {
     d["stable_step"] = stable.dt;
     d["step_limit"] = stable.damping_limited ? "damping-limited" : "wave-speed-limited";
     d["limiting_body"] = model.body(stable.limiting_body).name;
+    d["contact_share"] = stable.contact_share;  // of the limiting body's omega^2
     d["steps"] = static_cast<long>(s.def.duration / stable.dt);
   }
   d["first_step"] = sim->first_dt;

@@ -51,6 +51,7 @@ def test_info_is_what_softgrain_info_prints():
     assert info["bodies"] == 62  # 60 grains and two first bodies
     assert info["field_nodes"] > 0 and info["gauss_points"] > info["field_nodes"]
     assert 0 < info["stable_step"] < 0.01
+    assert 0.5 < info["contact_share"] < 1.0  # the penalty sets most of this cell's step (95%)
     assert info["integrator"] == "explicit"
     # Both integrators timed as `softgrain info` does, the configured one marked; the explicit
     # one's step is the model's own estimate, and the IMEX step is not damping-limited.
