@@ -185,7 +185,13 @@ def scenario_text(n, safety, seed, variant="standard"):
 
 
 def run_case(binary, runs, n, safety, seed, variant, threads):
-    name = case_name(n, safety, seed, variant)
+    run_and_analyze(binary, runs, case_name(n, safety, seed, variant),
+                    scenario_text(n, safety, seed, variant), threads, WINDOW)
+
+
+def run_and_analyze(binary, runs, name, text, threads, window):
+    """Runs the scenario `text` as `name` in `runs` and analyses it over `window`, unless its
+    analysis/summary.json exists (an interrupted study resumes where it stopped)."""
     folder = os.path.join(runs, name)
     summary = os.path.join(folder, "analysis", "summary.json")
     if os.path.exists(summary):
@@ -193,14 +199,13 @@ def run_case(binary, runs, n, safety, seed, variant, threads):
     os.makedirs(folder, exist_ok=True)
     toml = os.path.join(runs, name + ".toml")
     with open(toml, "w") as f:
-        f.write(scenario_text(n, safety, seed, variant).replace('name = "sheared-layer"',
-                                                                   f'name = "{name}"'))
+        f.write(text.replace('name = "sheared-layer"', f'name = "{name}"'))
     start = time.time()
     # --overwrite: a run stopped before its analysis restarts from its beginning.
     subprocess.run([binary, "run", toml, "--threads", str(threads), "-o", runs, "--overwrite"],
                    check=True, stdout=subprocess.DEVNULL)
     wall = time.time() - start
-    subprocess.run([binary, "analyze", folder, "--window", str(WINDOW[0]), str(WINDOW[1]),
+    subprocess.run([binary, "analyze", folder, "--window", str(window[0]), str(window[1]),
                     "--no-plots", "--no-agglomerates"], stdout=subprocess.DEVNULL)
     with open(os.path.join(folder, "wall_seconds.txt"), "w") as f:
         f.write(f"{wall:.1f}\n")
