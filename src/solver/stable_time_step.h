@@ -45,8 +45,8 @@ double wave_speed_frequency_bound(const Model& model, BodyId body);
 // its elastic K, and with omega = max of the two the mode condition a + 2c < 4 (above) holds
 // for both a <= (omega dt)^2 and c <= alpha omega^2 dt.
 struct BodyFrequencies {
-  std::vector<double> omega;
-  std::vector<double> contact_share;
+  std::vector<double> omega;          // per body, 0 for a body with no frequency
+  std::vector<double> contact_share;  // per body: (omega_contact^2 + omega_partner^2) / omega^2
 };
 BodyFrequencies estimate_body_frequencies(const Model& model, double contact_stiffness,
                                           const IntegratorParams& integrator = {});
