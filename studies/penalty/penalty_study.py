@@ -42,6 +42,7 @@ import sys
 STUDY_DIR = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(STUDY_DIR))
 sys.path.insert(0, os.path.join(ROOT, "studies", "convergence"))
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 import mu_convergence as layer  # noqa: E402  (the sheared layer and its runner)
 
 RESULTS = os.path.join(STUDY_DIR, "results.csv")
