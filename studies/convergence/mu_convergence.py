@@ -213,16 +213,22 @@ def run_and_analyze(binary, runs, name, text, threads, window):
 
 
 def read_run(runs, n, safety, seed, variant):
-    folder = os.path.join(runs, case_name(n, safety, seed, variant))
+    return read_row(os.path.join(runs, case_name(n, safety, seed, variant)),
+                    {"spacing_ratio": n, "node_spacing": MEAN_DIAMETER / n, "safety": safety,
+                     "variant": variant, "seed": seed},
+                    QUANTITIES + ("mu_error", "top_mu_error", "bottom_mu_error"))
+
+
+def read_row(folder, row, quantities):
+    """`row` completed with the run's `quantities` from analysis/summary.json ("" where it has
+    none), its accepted steps, nodes and wall seconds; None if the run has no analysis."""
     try:
         with open(os.path.join(folder, "analysis", "summary.json")) as f:
             summary = json.load(f)
     except FileNotFoundError:
         return None
     values = {k: v.get("value") for k, v in summary["quantities"].items()}
-    row = {"spacing_ratio": n, "node_spacing": MEAN_DIAMETER / n, "safety": safety,
-           "variant": variant, "seed": seed}
-    for q in QUANTITIES + ("mu_error", "top_mu_error", "bottom_mu_error"):
+    for q in quantities:
         v = values.get(q)
         row[q] = "" if v is None else v
     row["steps"], row["nodes"] = run_size(folder)
@@ -257,15 +263,31 @@ def collect(runs, seeds):
 
 
 def write_results(rows):
-    fields = ["spacing_ratio", "node_spacing", "safety", "variant", "seed", *QUANTITIES, "mu_error",
-              "top_mu_error", "bottom_mu_error", "steps", "nodes", "wall_seconds"]
-    tmp = RESULTS + ".tmp"
+    write_rows(RESULTS, ["spacing_ratio", "node_spacing", "safety", "variant", "seed", *QUANTITIES,
+                         "mu_error", "top_mu_error", "bottom_mu_error", "steps", "nodes",
+                         "wall_seconds"], rows)
+
+
+def write_rows(path, fields, rows):
+    """One CSV line per row (floats to 6 digits), written atomically."""
+    tmp = path + ".tmp"
     with open(tmp, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=fields)
         w.writeheader()
         for r in rows:
             w.writerow({k: (f"{r[k]:.6g}" if isinstance(r[k], float) else r[k]) for k in fields})
-    os.replace(tmp, RESULTS)
+    os.replace(tmp, path)
+
+
+def report(command, rows, markdown_of, write_of, plot_of, paths):
+    """The end of a study's command: the markdown tables, or the CSV and the figure."""
+    if command == "markdown":
+        markdown_of(rows)
+        return
+    write_of(rows)
+    if rows:
+        plot_of(rows)
+    print(f"{len(rows)} runs: {', '.join(paths)}")
 
 
 def ensembles(rows):
@@ -376,10 +398,15 @@ def plot(rows):
     axes.flat[0].legend(fontsize=8)
     fig.suptitle("Sheared cohesive layer (ν = 0.495, Ẽ = 1, c̃ = 0, α̃ ≈ −2): ensemble means ± "
                  "standard errors (grey: each run)", fontsize=11)
+    save_figure(fig, FIGURE)
+
+
+def save_figure(fig, path):
+    """The figure laid out and written atomically."""
     fig.tight_layout()
-    tmp = FIGURE + ".tmp.png"
+    tmp = path + ".tmp.png"
     fig.savefig(tmp, dpi=90)
-    os.replace(tmp, FIGURE)
+    os.replace(tmp, path)
 
 
 def markdown(rows):
@@ -533,14 +560,7 @@ def main():
         for n, s, seed, variant in cases(a.seeds):
             if a.only in case_name(n, s, seed, variant):
                 run_case(os.path.abspath(a.bin), a.runs, n, s, seed, variant, a.threads)
-    rows = collect(a.runs, a.seeds)
-    if a.command == "markdown":
-        markdown(rows)
-        return
-    write_results(rows)
-    if rows:
-        plot(rows)
-    print(f"{len(rows)} runs: {RESULTS}, {FIGURE}")
+    report(a.command, collect(a.runs, a.seeds), markdown, write_results, plot, (RESULTS, FIGURE))
 
 
 if __name__ == "__main__":

@@ -33,8 +33,6 @@ numpy and matplotlib (Debian: python3-numpy, python3-matplotlib).
 
 import argparse
 import concurrent.futures
-import csv
-import json
 import math
 import os
 import sys
@@ -73,23 +71,11 @@ def scenario_text(n, k, seed):
 
 
 def read_run(runs, n, k, seed):
-    folder = os.path.join(runs, case_name(n, k, seed))
-    try:
-        with open(os.path.join(folder, "analysis", "summary.json")) as f:
-            summary = json.load(f)
-    except FileNotFoundError:
-        return None
-    values = {q: v.get("value") for q, v in summary["quantities"].items()}
     h = layer.MEAN_DIAMETER / n
-    row = {"spacing_ratio": n, "normal_stiffness": k, "k_h_over_E": k * h / YOUNG,
-           "k_D_over_E": k * layer.MEAN_DIAMETER / YOUNG, "seed": seed}
-    for q in QUANTITIES:
-        v = values.get(q)
-        row[q] = "" if v is None else v
-    row["steps"], row["nodes"] = layer.run_size(folder)
-    wall = os.path.join(folder, "wall_seconds.txt")
-    row["wall_seconds"] = open(wall).read().strip() if os.path.exists(wall) else ""
-    return row
+    return layer.read_row(os.path.join(runs, case_name(n, k, seed)),
+                          {"spacing_ratio": n, "normal_stiffness": k, "k_h_over_E": k * h / YOUNG,
+                           "k_D_over_E": k * layer.MEAN_DIAMETER / YOUNG, "seed": seed},
+                          QUANTITIES)
 
 
 def collect(runs, seeds):
@@ -97,15 +83,8 @@ def collect(runs, seeds):
 
 
 def write_results(rows):
-    fields = ["spacing_ratio", "normal_stiffness", "k_h_over_E", "k_D_over_E", "seed", *QUANTITIES, "steps",
-              "nodes", "wall_seconds"]
-    tmp = RESULTS + ".tmp"
-    with open(tmp, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=fields)
-        w.writeheader()
-        for r in rows:
-            w.writerow({k: (f"{r[k]:.6g}" if isinstance(r[k], float) else r[k]) for k in fields})
-    os.replace(tmp, RESULTS)
+    layer.write_rows(RESULTS, ["spacing_ratio", "normal_stiffness", "k_h_over_E", "k_D_over_E",
+                               "seed", *QUANTITIES, "steps", "nodes", "wall_seconds"], rows)
 
 
 def mean_and_error(values):
@@ -171,10 +150,7 @@ def plot(rows):
     axes.flat[0].legend(fontsize=8)
     fig.suptitle("Sheared cohesive layer (ν = 0.495, Ẽ = 1, c̃ = 0, α̃ ≈ −2): the contact penalty; "
                  "ensemble means ± standard errors (grey: each run, seeds 1-5)", fontsize=11)
-    fig.tight_layout()
-    tmp = FIGURE + ".tmp.png"
-    fig.savefig(tmp, dpi=90)
-    os.replace(tmp, FIGURE)
+    layer.save_figure(fig, FIGURE)
 
 
 def markdown(rows):
@@ -223,14 +199,8 @@ def main():
                                     case_name(*case), scenario_text(*case), a.threads,
                                     layer.WINDOW) for case in todo]:
                 job.result()
-    rows = collect(a.runs, a.seeds)
-    if a.command == "markdown":
-        markdown(rows)
-        return
-    write_results(rows)
-    if rows:
-        plot(rows)
-    print(f"{len(rows)} runs: {RESULTS}, {FIGURE}")
+    layer.report(a.command, collect(a.runs, a.seeds), markdown, write_results, plot,
+                 (RESULTS, FIGURE))
 
 
 if __name__ == "__main__":
