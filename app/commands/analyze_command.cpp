@@ -106,7 +106,8 @@ const Registration registration(
          const int plot_status = a->no_plots ? 0 : draw_plots(a->run_dir, a->plots);
          // The window's failed steadiness checks (analysis/steadiness.h), where they are seen.
          if (!r.summary.warnings.empty()) {
-           std::cout << "\nWARNINGS (the window is not steady; the averages are suspect):\n";
+           std::cout << "\nWARNINGS (the window is not steady or the ledger does not close; the "
+                        "averages are suspect):\n";
            for (const SteadinessWarning& w : r.summary.warnings)
              std::cout << "  - " << w.check << ": " << w.message << "\n";
          }

@@ -22,7 +22,10 @@ EnergyBudget compute_energy_budget(const Series& series, const TimeWindow& windo
   const double contact = cont[b] - cont[a];
   SG_VERIFY(bulk >= 0.0 && contact >= 0.0,
             series.path << ": cumulative dissipation decreases over the window (damping " << bulk
-                        << ", contact " << contact << ")");
+                        << ", contact " << contact
+                        << "): energy given back, which no damping or contact law does; the "
+                           "run's time integration was unstable there (a step beyond the "
+                           "stable one: see its run.log)");
   SG_VERIFY(bulk + contact > 0.0, series.path << ": no energy dissipated over the window ["
                                               << time[a] << ", " << time[b]
                                               << "]; the energy budget is undefined");

@@ -113,6 +113,20 @@ void check_energy_drift(const Series& series, const TimeWindow& w, const EnergyB
   }
 }
 
+void check_energy_residual(const EnergyBudget& e, const SteadinessThresholds& th,
+                           std::vector<SteadinessWarning>& out) {
+  const double dissipated = (e.bulk_power + e.contact_power) * e.duration;
+  if (!(dissipated > 0.0)) return;
+  const double share = std::abs(e.residual_drift) / dissipated;
+  if (!(share > th.ledger_residual)) return;
+  out.push_back({"energy_residual",
+                 "the energy ledger's residual changes by " + number(e.residual_drift) +
+                     " over the window, " + percent(share) +
+                     " of the energy dissipated in it (more than " + percent(th.ledger_residual) +
+                     "): the time integration did not keep the energy, and the dissipation "
+                     "shares are off by as much (a step beyond the stable one? see run.log)"});
+}
+
 void check_mu_trend(const Series& series, const TimeWindow& w, std::span<const DrivenBody> bodies,
                     double mu, const SteadinessThresholds& th,
                     std::vector<SteadinessWarning>& out) {
@@ -157,6 +171,7 @@ std::vector<SteadinessWarning> check_steadiness(const Series& series, const Time
     check_energy_drift(series, window, *energy, thresholds, out);
   }
   check_mu_trend(series, window, bodies, mu, thresholds, out);
+  if (energy) check_energy_residual(*energy, thresholds, out);
   return out;
 }
 

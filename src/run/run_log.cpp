@@ -9,6 +9,7 @@
 #include "core/wait_policy.h"
 #include "io/atomic_file.h"
 #include "model/force_kernel.h"
+#include "run/integration_checks.h"
 
 namespace sg {
 
@@ -60,7 +61,7 @@ void write_parameters(std::ostream& out, const ScenarioDef& s, const IntegratorC
   }
 }
 
-void write_model(std::ostream& out, const Simulation& sim) {
+void write_model(std::ostream& out, const ScenarioDef& scenario, const Simulation& sim) {
   const Model& model = sim.model;
   const StableStep& stable = sim.first_estimate;
   out << "\n# model: " << model.bodies.size() << " bodies, " << model.node_count() << " nodes, "
@@ -71,8 +72,11 @@ void write_model(std::ostream& out, const Simulation& sim) {
         << model.body(stable.limiting_body).name << "'), "
         << (stable.damping_limited ? "damping-limited" : "wave-speed-limited")
         << ", dt = " << stable.dt << "; " << contact_share_note(stable) << "\n";
-  out << sim.mass_scaling_note << sim.initial_state_note << "# first time step: " << sim.first_dt
-      << " (adaptive: see docs/scenario.md [time])\n";
+  out << sim.mass_scaling_note << sim.initial_state_note << sim.fixed_step_note
+      << "# first time step: " << sim.first_dt
+      << (scenario.fixed_time_step > 0.0 ? " (fixed_step: no estimate, no step control)"
+                                         : " (adaptive: see docs/scenario.md [time])")
+      << "\n";
 }
 
 }  // namespace
@@ -82,7 +86,7 @@ void write_run_log(const std::filesystem::path& path, const ScenarioDef& scenari
   write_file_atomically(path, [&](std::ostream& out) {
     out << std::setprecision(10);
     write_parameters(out, scenario, simulation.integrator);
-    write_model(out, simulation);
+    write_model(out, scenario, simulation);
     out << notes;
   });
 }
@@ -112,6 +116,11 @@ std::string describe_contacts(const ContactSystem* contacts, long steps) {
   if (builds > 0) note << " (one every " << static_cast<double>(steps) / builds << " steps)";
   note << ", " << contacts->broad_phase().candidates().size() << " candidate pairs at the last\n";
   return note.str();
+}
+
+std::string describe_energy_balance(const EnergyLedger& ledger) {
+  const std::string warning = check_energy_balance(ledger);
+  return warning.empty() ? "" : "# warning: " + warning + "\n";
 }
 
 std::string describe_step_control(const StepStatistics& st) {

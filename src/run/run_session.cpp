@@ -11,6 +11,7 @@
 #include "io/run_directory.h"
 #include "model/force_kernel.h"
 #include "run/checkpoint_output.h"
+#include "run/integration_checks.h"
 #include "run/progress_output.h"
 #include "run/run_length.h"
 #include "run/run_log.h"
@@ -100,6 +101,8 @@ void announce_end(std::ostream& out, bool terminal, const Simulation& sim,
       << e.external_work << ", damping dissipated " << e.damping_dissipated
       << ", contact dissipated " << e.contact_dissipated << ", balance residual " << e.residual()
       << "\n";
+  if (const std::string warning = check_energy_balance(e); !warning.empty())
+    out << "  warning: " << warning << "\n";
   double mu = 0.0, normal_force = 0.0;
   if (series && series->top_friction(mu, normal_force))
     out << "  friction coefficient on the top body over t > " << 0.5 * duration
@@ -219,6 +222,7 @@ RunSummary RunSession::close() {
                   resume_note_ + describe_step_control(sim.controller.statistics()) +
                       describe_viscous_solves(sim.solver.viscous_statistics()) +
                       describe_contacts(sim.contacts.get(), sim.solver.state().step) +
+                      describe_energy_balance(sim.solver.state().energy) +
                       describe_profile(profile, summary.wall_seconds));
   if (options_.progress)
     announce_end(*options_.progress, options_.progress_on_terminal, sim, summary, series_,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "run/integration_checks.h"
 #include "scenario/geometry_checks.h"
 #include "solver/mass_scaling.h"
 
@@ -23,6 +24,17 @@ std::string scale_masses(const ScenarioDef& s, Model& model, const ContactSystem
       apply_mass_scaling(model, s.mass_scaling_step, s.time_step_safety,
                          contacts ? contacts->max_stiffness() : 0.0, integrator);
   return "# " + describe(report, model) + "\n";
+}
+
+// The warning of a fixed step beyond the estimated limit, to `progress` and for run.log.
+std::string warn_about_fixed_step(const ScenarioDef& s, const Model& model,
+                                  const ContactSystem* contacts, const IntegratorParams& integrator,
+                                  std::ostream* progress) {
+  const std::string warning = check_fixed_step(
+      s.fixed_time_step, model, contacts ? contacts->max_stiffness() : 0.0, integrator);
+  if (warning.empty()) return "";
+  if (progress) *progress << "softgrain: warning: " << warning << "\n";
+  return "# warning: " + warning + "\n";
 }
 
 StepControlParams step_control_params(const ScenarioDef& s, const IntegratorChoice& integrator,
@@ -52,6 +64,8 @@ Simulation::Simulation(const ScenarioDef& scenario, std::ostream* progress)
                  step_control_params(scenario, integrator, model, progress)),
       first_estimate(controller.last_estimate()),
       first_dt(controller.next_step()),
+      fixed_step_note(
+          warn_about_fixed_step(scenario, model, contacts.get(), integrator.params, progress)),
       // Computed before any restore: the model's fixed data only.
       fingerprint(fingerprint_of(model, run_settings(scenario, integrator, first_dt))) {}
 

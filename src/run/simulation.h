@@ -34,6 +34,9 @@ class Simulation {
   StepController controller;
   StableStep first_estimate;  // the controller's estimate of the built model
   double first_dt = 0.0;      // the first step
+  // A fixed_step beyond the estimated stability limit (run/integration_checks.h): the warning,
+  // a "# warning: ...\n" line for run.log; empty otherwise.
+  std::string fixed_step_note;
   CheckpointFingerprint fingerprint;
 };
 

@@ -176,8 +176,22 @@ TEST(Steadiness, ElasticEnergyRisingInTheWindow) {
             (Checks{"energy_estimates", "elastic_drift"}));
 }
 
-TEST(Steadiness, TheLedgerDriftingPartsTheEnergyEstimatesAlone) {
-  EXPECT_EQ(warnings_of(make_cell({.residual_change = 0.3})), Checks{"energy_estimates"});
+TEST(Steadiness, TheLedgerDriftingPartsTheEnergyEstimatesAndIsNamed) {
+  // 0.3 over a window that dissipates 0.3 x 20 = 6: 5% of it, and mu_from_work off by 0.015.
+  EXPECT_EQ(warnings_of(make_cell({.residual_change = 0.3})),
+            (Checks{"energy_estimates", "energy_residual"}));
+}
+
+TEST(Steadiness, ALedgerOffByMoreThanOnePercentOfTheDissipationIsNamedAlone) {
+  // 0.09 of 6 dissipated: 1.5%, beyond the 1% the ledger may leave; mu_from_work moves by
+  // 0.09 / 20 = 0.0045, within 2% of mu (0.006), so only the ledger's own check sees it.
+  EXPECT_EQ(warnings_of(make_cell({.residual_change = 0.09})), Checks{"energy_residual"});
+  EXPECT_EQ(warnings_of(make_cell({.residual_change = -0.09})), Checks{"energy_residual"});
+  // 0.05 of 6: 0.8%, within.
+  EXPECT_EQ(warnings_of(make_cell({.residual_change = 0.05})), Checks{});
+  // The share is a setting.
+  EXPECT_EQ(warnings_of(make_cell({.residual_change = 0.05}), {.ledger_residual = 0.005}),
+            Checks{"energy_residual"});
 }
 
 TEST(Steadiness, MuWithATrend) {
