@@ -74,7 +74,7 @@ void write_model(std::ostream& out, const ScenarioDef& scenario, const Simulatio
         << ", dt = " << stable.dt << "; " << contact_share_note(stable) << "\n";
   out << sim.mass_scaling_note << sim.initial_state_note << sim.fixed_step_note
       << "# first time step: " << sim.first_dt
-      << (scenario.fixed_time_step > 0.0 ? " (fixed_step: no estimate, no step control)"
+      << (scenario.fixed_time_step > 0.0 ? " (fixed_step: no step control)"
                                          : " (adaptive: see docs/scenario.md [time])")
       << "\n";
 }
