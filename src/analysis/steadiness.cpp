@@ -90,9 +90,14 @@ void check_energy_estimates(const Series& series, const TimeWindow& w, double mu
                      "changes over the window"});
 }
 
+// The energy the bulk and the contacts dissipated over the window.
+double dissipated_in_window(const EnergyBudget& e) {
+  return (e.bulk_power + e.contact_power) * e.duration;
+}
+
 void check_energy_drift(const Series& series, const TimeWindow& w, const EnergyBudget& e,
                         const SteadinessThresholds& th, std::vector<SteadinessWarning>& out) {
-  const double dissipated = (e.bulk_power + e.contact_power) * e.duration;
+  const double dissipated = dissipated_in_window(e);
   if (!(dissipated > 0.0) || w.size() < 3) return;
   const auto time = in_window(series.column("time"), w);
   struct Energy {
@@ -115,7 +120,7 @@ void check_energy_drift(const Series& series, const TimeWindow& w, const EnergyB
 
 void check_energy_residual(const EnergyBudget& e, const SteadinessThresholds& th,
                            std::vector<SteadinessWarning>& out) {
-  const double dissipated = (e.bulk_power + e.contact_power) * e.duration;
+  const double dissipated = dissipated_in_window(e);
   if (!(dissipated > 0.0)) return;
   const double share = std::abs(e.residual_drift) / dissipated;
   if (!(share > th.ledger_residual)) return;

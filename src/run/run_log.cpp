@@ -9,7 +9,6 @@
 #include "core/wait_policy.h"
 #include "io/atomic_file.h"
 #include "model/force_kernel.h"
-#include "run/integration_checks.h"
 
 namespace sg {
 
@@ -116,11 +115,6 @@ std::string describe_contacts(const ContactSystem* contacts, long steps) {
   if (builds > 0) note << " (one every " << static_cast<double>(steps) / builds << " steps)";
   note << ", " << contacts->broad_phase().candidates().size() << " candidate pairs at the last\n";
   return note.str();
-}
-
-std::string describe_energy_balance(const EnergyLedger& ledger) {
-  const std::string warning = check_energy_balance(ledger);
-  return warning.empty() ? "" : "# warning: " + warning + "\n";
 }
 
 std::string describe_step_control(const StepStatistics& st) {

@@ -25,10 +25,6 @@ std::string describe_viscous_solves(const ViscousSolveStatistics& statistics);
 // ("" without contacts).
 std::string describe_contacts(const ContactSystem* contacts, long steps);
 
-// The energy ledger's closure at the end ("" within 1%, else "# warning: ...",
-// run/integration_checks.h).
-std::string describe_energy_balance(const EnergyLedger& ledger);
-
 // The profile: wall seconds and share per phase, and the time per step.
 std::string describe_profile(const StepProfile& profile, double wall_seconds);
 

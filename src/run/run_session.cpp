@@ -83,9 +83,11 @@ void announce_start(std::ostream& out, const Simulation& sim, bool resumed) {
       << (resumed ? "; resumed at step " + std::to_string(sim.solver.state().step) : "") << "\n";
 }
 
-// `series`: null without outputs (no friction line).
+// `series`: null without outputs (no friction line). `energy_warning`: the ledger's
+// (run/integration_checks.h check_energy_balance), empty when it closes.
 void announce_end(std::ostream& out, bool terminal, const Simulation& sim,
-                  const RunSummary& summary, const SeriesOutput* series, double duration) {
+                  const RunSummary& summary, const SeriesOutput* series, double duration,
+                  const std::string& energy_warning) {
   const StepStatistics& st = sim.controller.statistics();
   // On a terminal the progress line is still there, without its line break: overwrite it.
   const std::string clear_line = terminal ? "\r" + std::string(70, ' ') + "\r" : "";
@@ -101,8 +103,7 @@ void announce_end(std::ostream& out, bool terminal, const Simulation& sim,
       << e.external_work << ", damping dissipated " << e.damping_dissipated
       << ", contact dissipated " << e.contact_dissipated << ", balance residual " << e.residual()
       << "\n";
-  if (const std::string warning = check_energy_balance(e); !warning.empty())
-    out << "  warning: " << warning << "\n";
+  if (!energy_warning.empty()) out << "  warning: " << energy_warning << "\n";
   double mu = 0.0, normal_force = 0.0;
   if (series && series->top_friction(mu, normal_force))
     out << "  friction coefficient on the top body over t > " << 0.5 * duration
@@ -217,16 +218,17 @@ RunSummary RunSession::close() {
                                   static_cast<double>(sim.solver.state().step - first_step_) /
                                   summary.wall_seconds;
   summary.profile = profile;
+  const std::string energy_warning = check_energy_balance(sim.solver.state().energy);
   if (options_.write_outputs)
     write_run_log(folder_.run_log(), scenario_, sim,
                   resume_note_ + describe_step_control(sim.controller.statistics()) +
                       describe_viscous_solves(sim.solver.viscous_statistics()) +
                       describe_contacts(sim.contacts.get(), sim.solver.state().step) +
-                      describe_energy_balance(sim.solver.state().energy) +
+                      (energy_warning.empty() ? "" : "# warning: " + energy_warning + "\n") +
                       describe_profile(profile, summary.wall_seconds));
   if (options_.progress)
     announce_end(*options_.progress, options_.progress_on_terminal, sim, summary, series_,
-                 scenario_.duration);
+                 scenario_.duration, energy_warning);
   lock_.release();  // the folder is complete (or left as a killed run leaves it)
   return summary;
 }
